@@ -1,0 +1,350 @@
+//! Bit-true model of `encspeed_core` (layer 2): what the hardware computes, clock cycle for
+//! clock cycle, in the hardware's integer widths.
+//!
+//! [`Table1`] is Rairán's Table 1 as one step per clock (ts = one clock period), in the
+//! order of DESIGN-NOTES §3, with counters that saturate at the counter width instead of
+//! wrapping. [`CoreModel`] wraps it with the input pipeline of the hardware (two-flop
+//! synchroniser and rising-edge detector on A) and the start-up rules, so that its outputs
+//! are those of the emitted Verilog after every rising clock edge.
+//!
+//! Start-up rule (the "false edge" decision): a channel that is already high when reset
+//! releases is not an encoder pulse. The core therefore behaves exactly as [`Table1`] run
+//! on the A samples A₁, A₂, … taken at the clock edges after reset, with lep_k = A_k ∧ ¬A_{k−1}
+//! and A₀ := A₁, delayed by [`CORE_LATENCY_CYCLES`] clock cycles; the ts/dt time base is held
+//! in reset for those cycles so that the delay is a pure latency (the `core_is_table1_delayed`
+//! test checks this equivalence).
+
+use crate::params::{Params, CORE_LATENCY_CYCLES, MIN_DT_CYCLES};
+
+/// Outputs of [`Table1`] after a step (the hardware's registers after a clock edge).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Table1Out {
+    /// Nep1: encoder pulses counted in the last dt window that started at a pulse.
+    pub nep: u64,
+    /// Ndt1: whole dt intervals between the last two pulses (1 at high speed).
+    pub ndt: u64,
+    /// One-cycle strobe: Nep1 or Ndt1 was written by the step just taken.
+    pub update: bool,
+    /// Zero speed: Cdt has reached the timeout (no pulse for `timeout_dt` dt intervals).
+    pub stalled: bool,
+}
+
+/// Internal registers of [`Table1`], for waveforms and debugging.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Table1State {
+    /// ts counter since the last dt tick or restart ("clock" in Table 1).
+    pub clock: u64,
+    /// Cep: pulses counted since the last dt tick.
+    pub cep: u64,
+    /// Cdt: dt ticks counted since the last pulse.
+    pub cdt: u64,
+    /// Nep1 register.
+    pub nep1: u64,
+    /// Ndt1 register.
+    pub ndt1: u64,
+    /// Registered update strobe.
+    pub update: bool,
+}
+
+/// Rairán's Table 1, one step per clock cycle, saturating.
+#[derive(Clone, Debug)]
+pub struct Table1 {
+    counter_max: u64,
+    timeout_dt: u64,
+    s: Table1State,
+}
+
+impl Table1 {
+    /// A Table 1 engine in its reset state.
+    pub fn new(p: &Params) -> Table1 {
+        let mut t = Table1 {
+            counter_max: p.counter_max(),
+            timeout_dt: p.timeout_dt(),
+            s: Table1State::default(),
+        };
+        t.reset();
+        t
+    }
+
+    /// Table 1 line 1-2: Cep = Cdt = Nep1 = clock = 0, Ndt1 = 1.
+    pub fn reset(&mut self) {
+        self.s = Table1State {
+            ndt1: 1,
+            ..Table1State::default()
+        };
+    }
+
+    /// The registers as they stand.
+    pub fn state(&self) -> Table1State {
+        self.s
+    }
+
+    /// The outputs as they stand.
+    pub fn outputs(&self) -> Table1Out {
+        Table1Out {
+            nep: self.s.nep1,
+            ndt: self.s.ndt1,
+            update: self.s.update,
+            stalled: self.s.cdt >= self.timeout_dt,
+        }
+    }
+
+    /// One ts step with encoder pulse `lep` and dt = `cfg_dt` clock cycles. A `cfg_dt`
+    /// below 2 is treated as 2 (the hardware flags it on `cfg_error`). The dt comparison is
+    /// `clock + 1 >= dt` rather than `==`, so that lowering `cfg_dt` at run time ends the
+    /// current interval at once instead of letting the ts counter run to its limit; with a
+    /// constant dt the two are the same.
+    pub fn step(&mut self, lep: bool, cfg_dt: u64) -> Table1Out {
+        assert!(
+            cfg_dt <= self.counter_max,
+            "cfg_dt = {cfg_dt} does not fit the {}-wide port",
+            self.counter_max
+        );
+        let max = self.counter_max;
+        let sat_inc = |v: u64| if v == max { v } else { v + 1 };
+        let s = self.s;
+        let dt = cfg_dt.max(MIN_DT_CYCLES);
+        // line 4-7: a pulse after at least one dt tick restarts the time base.
+        let restart = lep && s.cdt != 0;
+        // line 8 and 12: clock == dt (never after a restart: dt >= 2 > 0).
+        let clock_plus = s.clock + 1;
+        let tick = !restart && clock_plus >= dt;
+        // line 9
+        let nep_write = tick && s.cep != 0;
+        let mut n = s;
+        n.clock = if restart || tick { 0 } else { clock_plus };
+        if nep_write {
+            n.nep1 = s.cep;
+        }
+        if restart {
+            n.ndt1 = s.cdt;
+        }
+        // line 10-11 then 13: a pulse on the tick is counted and then cleared with Cep.
+        let cep_after_pulse = if lep { sat_inc(s.cep) } else { s.cep };
+        let cdt_after_pulse = if lep { 0 } else { s.cdt };
+        n.cep = if tick { 0 } else { cep_after_pulse };
+        n.cdt = if tick {
+            sat_inc(cdt_after_pulse)
+        } else {
+            cdt_after_pulse
+        };
+        n.update = nep_write || restart;
+        self.s = n;
+        self.outputs()
+    }
+}
+
+/// Inputs of `encspeed_core` during one clock cycle (sampled at its rising edge).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CoreInputs {
+    /// Synchronous active-high reset.
+    pub reset: bool,
+    /// Encoder channel A (asynchronous).
+    pub enc_a: bool,
+    /// Encoder channel B (asynchronous; not used by the x1 estimator yet).
+    pub enc_b: bool,
+    /// Encoder index Z (asynchronous; not used by the x1 estimator yet).
+    pub enc_z: bool,
+    /// dt in clock cycles.
+    pub cfg_dt: u64,
+}
+
+/// Outputs of `encspeed_core` after a rising clock edge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CoreOutputs {
+    /// Nep1.
+    pub nep: u64,
+    /// Ndt1.
+    pub ndt: u64,
+    /// One-cycle strobe: `nep` or `ndt` was just written.
+    pub update: bool,
+    /// No pulse for the timeout.
+    pub stalled: bool,
+    /// `cfg_dt` is below 2 and is being used as 2 (combinational from `cfg_dt`).
+    pub cfg_error: bool,
+}
+
+/// The input pipeline state of the core, for waveforms.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FrontState {
+    /// First and second synchroniser flops of A.
+    pub sync_a: [bool; 2],
+    /// A one cycle before `sync_a[1]` (edge detector).
+    pub prev_a: bool,
+    /// Clock edges since reset, saturating at 3 (start-up sequencing).
+    pub fill: u8,
+}
+
+/// Bit-true model of the whole `encspeed_core`.
+#[derive(Clone, Debug)]
+pub struct CoreModel {
+    front: FrontState,
+    engine: Table1,
+}
+
+impl CoreModel {
+    /// A core model in the state the hardware has after reset.
+    pub fn new(p: &Params) -> CoreModel {
+        CoreModel {
+            front: FrontState::default(),
+            engine: Table1::new(p),
+        }
+    }
+
+    /// The Table 1 registers.
+    pub fn engine(&self) -> &Table1 {
+        &self.engine
+    }
+
+    /// The synchroniser and edge-detector registers.
+    pub fn front(&self) -> FrontState {
+        self.front
+    }
+
+    /// One rising clock edge with `inp` applied; returns the outputs after the edge.
+    pub fn step(&mut self, inp: CoreInputs) -> CoreOutputs {
+        let f = self.front;
+        // Combinational values in the cycle before the edge, from the registers.
+        let lep = f.sync_a[1] && !f.prev_a && f.fill == 3;
+        let engine_reset = inp.reset || f.fill < CORE_LATENCY_CYCLES as u8;
+        if engine_reset {
+            self.engine.reset();
+        } else {
+            self.engine.step(lep, inp.cfg_dt);
+        }
+        self.front = if inp.reset {
+            FrontState::default()
+        } else {
+            FrontState {
+                sync_a: [inp.enc_a, f.sync_a[0]],
+                prev_a: f.sync_a[1],
+                fill: (f.fill + 1).min(3),
+            }
+        };
+        let o = self.engine.outputs();
+        CoreOutputs {
+            nep: o.nep,
+            ndt: o.ndt,
+            update: o.update,
+            stalled: o.stalled,
+            cfg_error: inp.cfg_dt < MIN_DT_CYCLES,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::Spec;
+
+    fn params(dt: u64) -> Params {
+        Params::new(Spec {
+            clock_hz: 1e6,
+            lines: 100,
+            dt_cycles: dt,
+            counter_bits: 8,
+            timeout_s: 10.0 * dt as f64 / 1e6,
+        })
+        .unwrap()
+    }
+
+    /// Run Table 1 on a pulse train of period `period` cycles (first pulse at `phase`).
+    fn run_pulses(t: &mut Table1, dt: u64, period: u64, phase: u64, cycles: u64) -> Vec<Table1Out> {
+        (1..=cycles)
+            .map(|k| t.step(k >= phase && (k - phase).is_multiple_of(period), dt))
+            .collect()
+    }
+
+    #[test]
+    fn hand_worked_high_speed_example() {
+        // dt = 10, pulses every 3 cycles starting at cycle 1: r = 10/3, ceil = 4.
+        // Cycle 1: pulse, Cdt = 0 so no restart, Cep = 1. Pulses at 4, 7 → Cep = 3.
+        // Cycle 10: tick, Nep1 = 3 (window from reset, not from a pulse), Cdt = 1 and the
+        // pulse at 10 is counted then cleared. Cycle 13: pulse with Cdt = 1: restart,
+        // Ndt1 = 1, Cep = 1. Pulses 16, 19, 22 → Cep = 4; tick at 23: Nep1 = 4 = ceil(r).
+        let mut t = Table1::new(&params(10));
+        let out = run_pulses(&mut t, 10, 3, 1, 23);
+        assert_eq!(out[9].nep, 3);
+        assert!(out[9].update);
+        assert_eq!(out[12].ndt, 1);
+        assert!(out[12].update);
+        assert_eq!(out[21].nep, 3);
+        assert_eq!(out[22].nep, 4);
+        assert!(out[22].update);
+        assert_eq!(t.state().clock, 0);
+    }
+
+    #[test]
+    fn hand_worked_low_speed_example() {
+        // dt = 10, pulses every 25 cycles from cycle 5: ticks at 10, 20 → Cdt = 2 at the
+        // pulse at 30: Ndt1 = floor(25/10) = 2, clock restarts; ticks at 40, 50 → Cdt = 2
+        // at 55 again. Nep1 = 1 from the tick after each pulse.
+        let mut t = Table1::new(&params(10));
+        let out = run_pulses(&mut t, 10, 25, 5, 60);
+        assert_eq!(out[29].ndt, 2);
+        assert_eq!(out[39].nep, 1);
+        assert_eq!(out[54].ndt, 2);
+        assert_eq!(out[59].nep, 1);
+    }
+
+    #[test]
+    fn counters_saturate_and_timeout_flags() {
+        // 8-bit counters, timeout 10 dt intervals: without pulses Cdt climbs to 10 and
+        // `stalled` rises; it keeps climbing to 255 and stays there.
+        let p = params(2);
+        let mut t = Table1::new(&p);
+        t.step(true, 2);
+        let out = run_pulses(&mut t, 2, u64::MAX, u64::MAX, 2 * 300);
+        assert_eq!(t.state().cdt, 255);
+        let first_stall = out.iter().position(|o| o.stalled).unwrap() as u64;
+        // Ticks at cycles 2, 4, …: the 10th tick after the pulse.
+        assert_eq!(first_stall + 2, 2 * 10);
+        // A pulse now writes the saturated count and clears the stall.
+        let o = t.step(true, 2);
+        assert_eq!(o.ndt, 255);
+        assert!(!o.stalled);
+    }
+
+    #[test]
+    fn core_is_table1_delayed() {
+        // Pseudo-random A pattern (xorshift), starting high to exercise the start-up rule.
+        let p = params(7);
+        let mut core = CoreModel::new(&p);
+        let mut table = Table1::new(&p);
+        let mut x: u32 = 0x1234_5678;
+        let mut a_samples = vec![];
+        for _ in 0..5000 {
+            x ^= x << 13;
+            x ^= x >> 17;
+            x ^= x << 5;
+            a_samples.push(a_samples.is_empty() || x % 5 < 2);
+        }
+        let core_out: Vec<CoreOutputs> = a_samples
+            .iter()
+            .map(|&a| {
+                core.step(CoreInputs {
+                    enc_a: a,
+                    cfg_dt: 7,
+                    ..Default::default()
+                })
+            })
+            .collect();
+        let l = CORE_LATENCY_CYCLES as usize;
+        let mut prev = a_samples[0];
+        for (k, &a) in a_samples.iter().enumerate() {
+            let expect = table.step(a && !prev, 7);
+            prev = a;
+            if k + l < core_out.len() {
+                let got = core_out[k + l];
+                assert_eq!(
+                    (got.nep, got.ndt, got.update),
+                    (expect.nep, expect.ndt, expect.update),
+                    "cycle {k}"
+                );
+            }
+        }
+        for o in &core_out[..l] {
+            assert_eq!((o.nep, o.ndt, o.update), (0, 1, false));
+        }
+    }
+}

@@ -1,0 +1,16 @@
+//! Golden model of encspeed.
+//!
+//! Layer 1 (float ideal): [`plant`] turns shaft motion into exact A/B/Z edge instants and
+//! clock samples; [`ideal`] runs Rairán's estimator and the classical PC/ET estimators in
+//! continuous time; [`rairan`] holds the paper's closed-form estimates and error bounds.
+//! Layer 2 (bit-true): [`bittrue`] computes, cycle for cycle and in the hardware's integer
+//! widths, what `encspeed_core` computes. [`params`] is the one validated parameter type
+//! shared by the golden model, the HDL constructors and the generated manifest.
+//!
+//! This crate never depends on rust-hdl.
+
+pub mod bittrue;
+pub mod ideal;
+pub mod params;
+pub mod plant;
+pub mod rairan;

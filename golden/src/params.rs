@@ -1,0 +1,319 @@
+//! The one validated parameter type of encspeed.
+//!
+//! A [`Spec`] is what a user writes (CLI options, a TOML file, a test); [`Params::new`]
+//! validates it once and returns [`Params`], which the golden model, the HDL constructors
+//! and the generated manifest all take. Nothing downstream re-checks or re-derives these
+//! values, so a bad parameter is refused here with a message naming it, or not at all.
+
+use serde::{Deserialize, Serialize};
+use std::fmt;
+
+/// Narrowest counter width the generator emits (bits).
+pub const MIN_COUNTER_BITS: u32 = 8;
+/// Widest counter width the generator emits (bits).
+pub const MAX_COUNTER_BITS: u32 = 32;
+/// Shortest dt the estimator accepts, in clock cycles (see [`ParamError::DtTooShort`]).
+pub const MIN_DT_CYCLES: u64 = 2;
+/// Latency, in clock cycles, from a rising edge of `enc_a` sampled at a clock edge to the
+/// clock edge at which `nep`/`ndt` show the result of that sample (two-flop synchroniser).
+pub const CORE_LATENCY_CYCLES: u32 = 2;
+
+/// Parameters as a user states them. Units are in the field names' docs.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Spec {
+    /// Frequency of `clock` in Hz; one Table 1 step (ts) per clock cycle.
+    pub clock_hz: f64,
+    /// Lines (A pulses) per revolution of the encoder disc, K.
+    pub lines: u32,
+    /// Nominal dt in clock cycles: the value the user intends to drive on `cfg_dt`. It sets
+    /// ω_lim in the manifest and the zero-speed timeout in dt intervals.
+    pub dt_cycles: u64,
+    /// Width of `cfg_dt`, of the ts counter and of the Cep/Cdt/Nep1/Ndt1 registers (bits).
+    pub counter_bits: u32,
+    /// Zero-speed timeout in seconds at the nominal dt: `stalled` rises when no encoder
+    /// pulse has come for this long (rounded up to whole dt intervals).
+    pub timeout_s: f64,
+}
+
+impl Default for Spec {
+    /// 100 MHz clock, 1024-line disc, dt = 1 ms (ω_lim = 0.9766 rev/s = 58.6 r/min),
+    /// 24-bit counters (dt up to 167 ms), 1 s zero-speed timeout.
+    fn default() -> Self {
+        Spec {
+            clock_hz: 100e6,
+            lines: 1024,
+            dt_cycles: 100_000,
+            counter_bits: 24,
+            timeout_s: 1.0,
+        }
+    }
+}
+
+/// Why a [`Spec`] was refused. Each message names the parameter and the legal range.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ParamError {
+    /// `clock_hz` is NaN, infinite, zero or negative.
+    ClockHz(f64),
+    /// `lines` is zero.
+    ZeroLines,
+    /// `dt_cycles` is below [`MIN_DT_CYCLES`].
+    DtTooShort(u64),
+    /// `counter_bits` is outside [`MIN_COUNTER_BITS`]..=[`MAX_COUNTER_BITS`].
+    CounterBits(u32),
+    /// `dt_cycles` does not fit the counters.
+    DtTooWide { dt_cycles: u64, counter_bits: u32 },
+    /// `timeout_s` is NaN, infinite, zero or negative.
+    Timeout(f64),
+    /// `timeout_s` is shorter than one dt interval, so it could never be measured.
+    TimeoutShorterThanDt { timeout_s: f64, dt_s: f64 },
+    /// The timeout, in dt intervals, does not fit the Cdt counter.
+    TimeoutTooWide { timeout_dt: f64, counter_bits: u32 },
+}
+
+impl fmt::Display for ParamError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ParamError::ClockHz(v) => {
+                write!(f, "clock_hz = {v}: must be a finite frequency > 0 Hz")
+            }
+            ParamError::ZeroLines => write!(f, "lines = 0: the disc needs at least one line"),
+            ParamError::DtTooShort(v) => write!(
+                f,
+                "dt_cycles = {v}: dt must be at least {MIN_DT_CYCLES} clock cycles \
+                 (one ts step cannot hold both a pulse and a dt tick)"
+            ),
+            ParamError::CounterBits(v) => write!(
+                f,
+                "counter_bits = {v}: must be {MIN_COUNTER_BITS}..={MAX_COUNTER_BITS}"
+            ),
+            ParamError::DtTooWide {
+                dt_cycles,
+                counter_bits,
+            } => write!(
+                f,
+                "dt_cycles = {dt_cycles} does not fit counter_bits = {counter_bits} \
+                 (max {}); raise counter_bits to at least {}",
+                max_value(*counter_bits),
+                bits_for(*dt_cycles)
+            ),
+            ParamError::Timeout(v) => {
+                write!(f, "timeout_s = {v}: must be a finite time > 0 s")
+            }
+            ParamError::TimeoutShorterThanDt { timeout_s, dt_s } => write!(
+                f,
+                "timeout_s = {timeout_s} is shorter than one dt interval ({dt_s} s)"
+            ),
+            ParamError::TimeoutTooWide {
+                timeout_dt,
+                counter_bits,
+            } => write!(
+                f,
+                "timeout_s needs {timeout_dt} dt intervals, more than counter_bits = \
+                 {counter_bits} can count (max {}); raise counter_bits to at least {} \
+                 or shorten timeout_s",
+                max_value(*counter_bits),
+                bits_for(*timeout_dt as u64)
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ParamError {}
+
+/// Largest value of an unsigned register `bits` wide.
+pub fn max_value(bits: u32) -> u64 {
+    (1u64 << bits) - 1
+}
+
+/// Fewest bits that hold `v`.
+pub fn bits_for(v: u64) -> u32 {
+    (u64::BITS - v.leading_zeros()).max(1)
+}
+
+/// Validated parameters. Construct with [`Params::new`]; fields are private so that no
+/// unvalidated value reaches the model or the hardware.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Params {
+    spec: Spec,
+    timeout_dt: u64,
+}
+
+impl Params {
+    /// Validate a [`Spec`].
+    pub fn new(spec: Spec) -> Result<Params, ParamError> {
+        if !(spec.clock_hz.is_finite() && spec.clock_hz > 0.0) {
+            return Err(ParamError::ClockHz(spec.clock_hz));
+        }
+        if spec.lines == 0 {
+            return Err(ParamError::ZeroLines);
+        }
+        if spec.dt_cycles < MIN_DT_CYCLES {
+            return Err(ParamError::DtTooShort(spec.dt_cycles));
+        }
+        if !(MIN_COUNTER_BITS..=MAX_COUNTER_BITS).contains(&spec.counter_bits) {
+            return Err(ParamError::CounterBits(spec.counter_bits));
+        }
+        if spec.dt_cycles > max_value(spec.counter_bits) {
+            return Err(ParamError::DtTooWide {
+                dt_cycles: spec.dt_cycles,
+                counter_bits: spec.counter_bits,
+            });
+        }
+        if !(spec.timeout_s.is_finite() && spec.timeout_s > 0.0) {
+            return Err(ParamError::Timeout(spec.timeout_s));
+        }
+        let dt_s = spec.dt_cycles as f64 / spec.clock_hz;
+        // Rounded up to whole dt intervals; a ratio within 1e-9 of a whole number is that
+        // number (so 1 s at dt = 1 ms is 1000 intervals, not 1001 from rounding noise).
+        let ratio = spec.timeout_s * spec.clock_hz / spec.dt_cycles as f64;
+        let timeout_dt = (ratio * (1.0 - 1e-9)).ceil();
+        if timeout_dt < 1.0 || spec.timeout_s < dt_s {
+            return Err(ParamError::TimeoutShorterThanDt {
+                timeout_s: spec.timeout_s,
+                dt_s,
+            });
+        }
+        // Cdt saturates at max_value; the timeout must be reached strictly before that so
+        // that `stalled` is a timeout and not an overflow.
+        if timeout_dt >= max_value(spec.counter_bits) as f64 {
+            return Err(ParamError::TimeoutTooWide {
+                timeout_dt,
+                counter_bits: spec.counter_bits,
+            });
+        }
+        Ok(Params {
+            spec,
+            timeout_dt: timeout_dt as u64,
+        })
+    }
+
+    /// The specification these parameters were validated from.
+    pub fn spec(&self) -> &Spec {
+        &self.spec
+    }
+    /// Clock frequency, Hz.
+    pub fn clock_hz(&self) -> f64 {
+        self.spec.clock_hz
+    }
+    /// Lines per revolution, K.
+    pub fn lines(&self) -> u32 {
+        self.spec.lines
+    }
+    /// Nominal dt, clock cycles.
+    pub fn dt_cycles(&self) -> u64 {
+        self.spec.dt_cycles
+    }
+    /// Counter width, bits.
+    pub fn counter_bits(&self) -> u32 {
+        self.spec.counter_bits
+    }
+    /// Largest value any counter holds: counters saturate here rather than wrap.
+    pub fn counter_max(&self) -> u64 {
+        max_value(self.spec.counter_bits)
+    }
+    /// Zero-speed timeout in dt intervals: `stalled` = (Cdt >= timeout_dt).
+    pub fn timeout_dt(&self) -> u64 {
+        self.timeout_dt
+    }
+    /// Clock period ts, seconds.
+    pub fn ts_s(&self) -> f64 {
+        1.0 / self.spec.clock_hz
+    }
+    /// Nominal dt, seconds.
+    pub fn dt_s(&self) -> f64 {
+        self.spec.dt_cycles as f64 / self.spec.clock_hz
+    }
+    /// Speed limit ω_lim = 1/(K·dt) in rev/s at the nominal dt (Rairán): the speed at
+    /// which one pulse comes every dt. Estimates n1, n2, n3 are in units of ω_lim.
+    pub fn omega_lim_rps(&self) -> f64 {
+        omega_lim_rps(self.spec.clock_hz, self.spec.lines, self.spec.dt_cycles)
+    }
+    /// Largest value Cep/Nep1 can reach at the largest `cfg_dt`: rising edges of A are at
+    /// least two cycles apart after the edge detector, and a window holds the pulse that
+    /// restarted it plus those in the next dt − 1 cycles: 1 + ⌊(dt − 1)/2⌋.
+    pub fn nep_reachable_max(&self) -> u64 {
+        1 + (self.counter_max() - 1) / 2
+    }
+}
+
+/// ω_lim = f_clk / (K · dt_cycles), rev/s, for any dt (e.g. a runtime `cfg_dt`).
+pub fn omega_lim_rps(clock_hz: f64, lines: u32, dt_cycles: u64) -> f64 {
+    clock_hz / (lines as f64 * dt_cycles as f64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn with(f: impl FnOnce(&mut Spec)) -> Result<Params, ParamError> {
+        let mut s = Spec::default();
+        f(&mut s);
+        Params::new(s)
+    }
+
+    #[test]
+    fn default_is_valid_and_derived_values_are_hand_checked() {
+        let p = Params::new(Spec::default()).unwrap();
+        // 100e6 / (1024 * 100_000) = 0.9765625 rev/s
+        assert_eq!(p.omega_lim_rps(), 0.9765625);
+        // 1 s / 1 ms = 1000 intervals
+        assert_eq!(p.timeout_dt(), 1000);
+        assert_eq!(p.counter_max(), 16_777_215);
+        assert_eq!(p.nep_reachable_max(), 8_388_608);
+    }
+
+    #[test]
+    fn every_bad_parameter_is_refused_with_its_name() {
+        let cases: Vec<(Result<Params, ParamError>, &str)> = vec![
+            (with(|s| s.clock_hz = f64::NAN), "clock_hz"),
+            (with(|s| s.clock_hz = -1.0), "clock_hz"),
+            (with(|s| s.clock_hz = 0.0), "clock_hz"),
+            (with(|s| s.clock_hz = f64::INFINITY), "clock_hz"),
+            (with(|s| s.lines = 0), "lines"),
+            (with(|s| s.dt_cycles = 1), "dt_cycles"),
+            (with(|s| s.dt_cycles = 0), "dt_cycles"),
+            (with(|s| s.counter_bits = 7), "counter_bits"),
+            (with(|s| s.counter_bits = 33), "counter_bits"),
+            (with(|s| s.counter_bits = 16), "dt_cycles"),
+            (with(|s| s.timeout_s = f64::NAN), "timeout_s"),
+            (with(|s| s.timeout_s = -1.0), "timeout_s"),
+            (with(|s| s.timeout_s = 1e-4), "timeout_s"),
+            (with(|s| s.timeout_s = 1e6), "timeout_s"),
+        ];
+        for (r, name) in cases {
+            let e = r.expect_err(name);
+            assert!(e.to_string().contains(name), "{e} should name {name}");
+        }
+    }
+
+    #[test]
+    fn width_limits_are_exact() {
+        // 255 is the largest 8-bit value: accepted; 256 is not.
+        let ok = with(|s| {
+            s.counter_bits = 8;
+            s.dt_cycles = 255;
+            s.timeout_s = 254.0 * 255.0 / 100e6;
+        });
+        assert!(ok.is_ok(), "{ok:?}");
+        let too_wide = with(|s| {
+            s.counter_bits = 8;
+            s.dt_cycles = 256;
+        });
+        assert!(matches!(too_wide, Err(ParamError::DtTooWide { .. })));
+        // 255 dt intervals would reach the saturation value itself: refused.
+        let sat = with(|s| {
+            s.counter_bits = 8;
+            s.dt_cycles = 255;
+            s.timeout_s = 255.0 * 255.0 / 100e6;
+        });
+        assert!(matches!(sat, Err(ParamError::TimeoutTooWide { .. })));
+    }
+
+    #[test]
+    fn bits_for_is_exact() {
+        assert_eq!(bits_for(255), 8);
+        assert_eq!(bits_for(256), 9);
+        assert_eq!(bits_for(0), 1);
+    }
+}

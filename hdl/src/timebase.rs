@@ -1,0 +1,123 @@
+//! The ts/dt time base of Rairán's Table 1: the ts counter ("clock" in the paper) and the
+//! dt-interval counter Cdt.
+//!
+//! The ts counter raises `tick` for one cycle when dt clock cycles have passed since the
+//! last tick or restart (Table 1 lines 4, 8, 12, 14). Cdt counts ticks since the last pulse
+//! (lines 11, 13). A pulse that comes after at least one tick (Cdt ≠ 0) restarts the
+//! interval: `restart` is high, the ts counter returns to zero and the tick of that cycle
+//! is cancelled (lines 5-7). A pulse on a tick clears Cdt and the tick then counts it to 1.
+//!
+//! dt comes from the runtime input `dt`; values below 2 are used as 2. The comparison is
+//! `count + 1 >= dt` so that lowering dt at run time ends the interval at once instead of
+//! letting the counter run to its limit; with a constant dt it equals the paper's
+//! `clock == dt`. Cdt saturates at 2^N − 1 instead of wrapping.
+//!
+//! `tick` and `restart` are combinational (from `lep` and the registers); `cdt` and
+//! `stalled` come from the Cdt register.
+
+use rust_hdl::prelude::*;
+
+/// ts counter with a runtime dt, and the Cdt counter of dt intervals.
+#[derive(LogicBlock)]
+pub struct Timebase<const N: usize> {
+    /// Clock of the core (one ts step per cycle).
+    pub clock: Signal<In, Clock>,
+    /// Synchronous active-high reset.
+    pub reset: Signal<In, Bit>,
+    /// Encoder pulse.
+    pub lep: Signal<In, Bit>,
+    /// dt in clock cycles.
+    pub dt: Signal<In, Bits<N>>,
+    /// High in the cycle in which `clock == dt`.
+    pub tick: Signal<Out, Bit>,
+    /// High in the cycle of a pulse that follows at least one tick (the dt base restarts).
+    pub restart: Signal<Out, Bit>,
+    /// Cdt: ticks since the last pulse.
+    pub cdt: Signal<Out, Bits<N>>,
+    /// Cdt has reached the zero-speed timeout.
+    pub stalled: Signal<Out, Bit>,
+    pub(crate) ts_count: DFF<Bits<N>>,
+    cdt_count: DFF<Bits<N>>,
+    count_plus: Signal<Local, Bits<N>>,
+    dt_used: Signal<Local, Bits<N>>,
+    restart_now: Signal<Local, Bit>,
+    tick_now: Signal<Local, Bit>,
+    cdt_after_pulse: Signal<Local, Bits<N>>,
+    zero: Constant<Bits<N>>,
+    one: Constant<Bits<N>>,
+    min_dt: Constant<Bits<N>>,
+    saturated: Constant<Bits<N>>,
+    timeout_dt: Constant<Bits<N>>,
+}
+
+impl<const N: usize> Timebase<N> {
+    /// A time base with N-bit counters; `timeout_dt` in dt intervals (validated by
+    /// [`golden::params::Params`] to be below the saturation value).
+    pub fn new(timeout_dt: u64) -> Self {
+        assert!(
+            timeout_dt < (1u64 << N) - 1,
+            "timeout does not fit {N} bits"
+        );
+        Self {
+            clock: Default::default(),
+            reset: Default::default(),
+            lep: Default::default(),
+            dt: Default::default(),
+            tick: Default::default(),
+            restart: Default::default(),
+            cdt: Default::default(),
+            stalled: Default::default(),
+            ts_count: Default::default(),
+            cdt_count: Default::default(),
+            count_plus: Default::default(),
+            dt_used: Default::default(),
+            restart_now: Default::default(),
+            tick_now: Default::default(),
+            cdt_after_pulse: Default::default(),
+            zero: Constant::new(0.into()),
+            one: Constant::new(1.into()),
+            min_dt: Constant::new(golden::params::MIN_DT_CYCLES.into()),
+            saturated: Constant::new(((1u64 << N) - 1).into()),
+            timeout_dt: Constant::new(timeout_dt.into()),
+        }
+    }
+}
+
+impl<const N: usize> Logic for Timebase<N> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, ts_count, cdt_count);
+        // Line 5: a pulse after at least one tick restarts the interval.
+        self.restart_now.next = self.lep.val() & (self.cdt_count.q.val() != self.zero.val());
+        // count + 1 cannot overflow: the count never exceeds the largest dt minus one.
+        self.count_plus.next = self.ts_count.q.val() + self.one.val();
+        self.dt_used.next = self.dt.val();
+        if self.dt.val() < self.min_dt.val() {
+            self.dt_used.next = self.min_dt.val();
+        }
+        // Line 8/12: never in a restart cycle (the count was just set to zero, dt >= 2).
+        self.tick_now.next =
+            !self.restart_now.val() & (self.count_plus.val() >= self.dt_used.val());
+        self.ts_count.d.next = self.count_plus.val();
+        if self.restart_now.val() | self.tick_now.val() {
+            self.ts_count.d.next = self.zero.val();
+        }
+        // Line 11 then 13, saturating.
+        self.cdt_after_pulse.next = self.cdt_count.q.val();
+        if self.lep.val() {
+            self.cdt_after_pulse.next = self.zero.val();
+        }
+        self.cdt_count.d.next = self.cdt_after_pulse.val();
+        if self.tick_now.val() & (self.cdt_after_pulse.val() != self.saturated.val()) {
+            self.cdt_count.d.next = self.cdt_after_pulse.val() + self.one.val();
+        }
+        if self.reset.val() {
+            self.ts_count.d.next = self.zero.val();
+            self.cdt_count.d.next = self.zero.val();
+        }
+        self.tick.next = self.tick_now.val();
+        self.restart.next = self.restart_now.val();
+        self.cdt.next = self.cdt_count.q.val();
+        self.stalled.next = self.cdt_count.q.val() >= self.timeout_dt.val();
+    }
+}

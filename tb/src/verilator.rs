@@ -1,0 +1,195 @@
+//! The emitted Verilog, compiled by Verilator with the harness in `tb/verilator/`.
+//!
+//! [`Verilated::build`] compiles a Verilog text once per content (cached under
+//! `target/verilator/<hash>/`); [`Verilated::run`] streams per-cycle inputs through it and
+//! returns per-cycle outputs in the same form as the golden model. A missing `verilator` is
+//! an error, never a skip: `.ci/run` installs it.
+
+use golden::bittrue::{CoreInputs, CoreOutputs};
+use std::io::{BufRead, BufReader, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+const HARNESS: &str = include_str!("../verilator/harness.cpp");
+/// Lint waivers for the emitted Verilog (each one explained in the file).
+pub const WAIVERS: &str = include_str!("../verilator/waivers.vlt");
+
+/// A compiled simulator of one emitted `encspeed_core`.
+pub struct Verilated {
+    exe: PathBuf,
+}
+
+fn fnv1a(parts: &[&str]) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for p in parts {
+        for b in p.bytes().chain([0u8]) {
+            h ^= b as u64;
+            h = h.wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+    h
+}
+
+fn run_checked(cmd: &mut Command, what: &str) -> Result<String, String> {
+    let out = cmd
+        .output()
+        .map_err(|e| format!("cannot run {what}: {e} (install it: see .ci/run)"))?;
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    if out.status.success() {
+        Ok(text)
+    } else {
+        Err(format!("{what} failed ({}):\n{text}", out.status))
+    }
+}
+
+/// Write the emitted Verilog and the waivers into `dir` for a tool to read.
+pub fn stage(dir: &Path, verilog: &str) -> std::io::Result<(PathBuf, PathBuf)> {
+    std::fs::create_dir_all(dir)?;
+    let v = dir.join("encspeed_core.v");
+    let w = dir.join("waivers.vlt");
+    std::fs::write(&v, verilog)?;
+    std::fs::write(&w, WAIVERS)?;
+    Ok((v, w))
+}
+
+/// `verilator --lint-only -Wall` with the documented waivers; Ok on a clean lint.
+pub fn lint(verilog: &str) -> Result<String, String> {
+    let dir = crate::target_dir()
+        .join("verilator")
+        .join(format!("lint-{:016x}", fnv1a(&[verilog])));
+    let (v, w) = stage(&dir, verilog).map_err(|e| e.to_string())?;
+    run_checked(
+        Command::new("verilator")
+            .args(["--lint-only", "-Wall", "--top-module", "encspeed_core"])
+            .arg(&w)
+            .arg(&v),
+        "verilator --lint-only",
+    )
+}
+
+impl Verilated {
+    /// Compile `verilog` (top module `encspeed_core`) with the harness, or reuse the build.
+    pub fn build(verilog: &str) -> Result<Verilated, String> {
+        let hash = fnv1a(&[verilog, HARNESS, WAIVERS]);
+        let root = crate::target_dir().join("verilator");
+        let done = root.join(format!("{hash:016x}"));
+        let exe = done.join("obj/Vencspeed_core");
+        if exe.exists() {
+            return Ok(Verilated { exe });
+        }
+        // Build in a private directory and rename it into place, so that tests running in
+        // parallel never see a half-built harness.
+        let tmp = root.join(format!("{hash:016x}.tmp{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&tmp);
+        let (v, w) = stage(&tmp, verilog).map_err(|e| e.to_string())?;
+        let h = tmp.join("harness.cpp");
+        std::fs::write(&h, HARNESS).map_err(|e| e.to_string())?;
+        run_checked(
+            Command::new("verilator")
+                .current_dir(&tmp)
+                .args(["--cc", "--exe", "--build", "-O3", "--trace", "-j", "2"])
+                .args(["--top-module", "encspeed_core", "-Mdir", "obj"])
+                .arg(&w)
+                .arg(&v)
+                .arg(&h),
+            "verilator --build",
+        )?;
+        if std::fs::rename(&tmp, &done).is_err() {
+            // Another process won the race; its build is identical.
+            let _ = std::fs::remove_dir_all(&tmp);
+        }
+        Ok(Verilated { exe })
+    }
+
+    /// Path of the compiled harness.
+    pub fn exe(&self) -> &Path {
+        &self.exe
+    }
+
+    /// Run `inputs` through the compiled Verilog, one clock edge per input; optionally write
+    /// a VCD of every signal to `vcd`.
+    pub fn run(
+        &self,
+        inputs: &[CoreInputs],
+        vcd: Option<&Path>,
+    ) -> Result<Vec<CoreOutputs>, String> {
+        let mut cmd = Command::new(&self.exe);
+        if let Some(path) = vcd {
+            cmd.arg("--vcd").arg(path);
+        }
+        let mut child = cmd
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .map_err(|e| format!("cannot start {}: {e}", self.exe.display()))?;
+        let mut stdin = child.stdin.take().expect("piped stdin");
+        let text: String = inputs
+            .iter()
+            .map(|i| {
+                format!(
+                    "{} {} {} {} {}\n",
+                    i.reset as u8, i.enc_a as u8, i.enc_b as u8, i.enc_z as u8, i.cfg_dt
+                )
+            })
+            .collect();
+        let writer = std::thread::spawn(move || stdin.write_all(text.as_bytes()));
+        let stdout = BufReader::new(child.stdout.take().expect("piped stdout"));
+        let mut outs = Vec::with_capacity(inputs.len());
+        for line in stdout.lines() {
+            let line = line.map_err(|e| e.to_string())?;
+            let f: Vec<u64> = line
+                .split_whitespace()
+                .map(|x| {
+                    x.parse::<u64>()
+                        .map_err(|e| format!("bad harness output {line:?}: {e}"))
+                })
+                .collect::<Result<_, _>>()?;
+            if f.len() != 5 {
+                return Err(format!("bad harness output {line:?}"));
+            }
+            outs.push(CoreOutputs {
+                nep: f[0],
+                ndt: f[1],
+                update: f[2] != 0,
+                stalled: f[3] != 0,
+                cfg_error: f[4] != 0,
+            });
+        }
+        writer
+            .join()
+            .expect("writer thread")
+            .map_err(|e| format!("writing to the harness: {e}"))?;
+        let out = child.wait_with_output().map_err(|e| e.to_string())?;
+        if !out.status.success() {
+            return Err(format!(
+                "harness failed ({}): {}",
+                out.status,
+                String::from_utf8_lossy(&out.stderr)
+            ));
+        }
+        Ok(outs)
+    }
+
+    /// Benchmark: cycles per second of the compiled Verilog on a square wave of `period`
+    /// cycles with dt = `dt` (see the harness's `--bench`).
+    pub fn bench(&self, cycles: u64, period: u64, dt: u64) -> Result<f64, String> {
+        let out = run_checked(
+            Command::new(&self.exe).args([
+                "--bench",
+                &cycles.to_string(),
+                &period.to_string(),
+                &dt.to_string(),
+            ]),
+            "harness --bench",
+        )?;
+        out.split_whitespace()
+            .nth(2)
+            .and_then(|x| x.parse().ok())
+            .ok_or_else(|| format!("bad bench output {out:?}"))
+    }
+}
