@@ -1,0 +1,192 @@
+//! The Verilog that ships is the Verilog that was tested: `generated/encspeed_core.v` is
+//! what the generator emits for the default parameters, it passes lint and synthesis, and
+//! it equals the bit-true golden model on every cycle in Verilator and in Icarus.
+
+use golden::bittrue::CoreInputs;
+use golden::params::{Params, Spec};
+use std::path::PathBuf;
+use std::process::Command;
+use tb::cosim::{assert_same, run_golden};
+use tb::verilator::Verilated;
+
+fn generated(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../generated")
+        .join(name)
+}
+
+fn shipped_verilog() -> String {
+    std::fs::read_to_string(generated("encspeed_core.v")).expect("generated/encspeed_core.v")
+}
+
+fn default_params() -> Params {
+    Params::new(Spec::default()).unwrap()
+}
+
+#[test]
+fn generated_files_are_up_to_date() {
+    let e = hdl::emit_core(&default_params());
+    let stale = "is stale: run `cargo run --release -- generate` and commit generated/";
+    assert!(
+        e.verilog == shipped_verilog(),
+        "generated/encspeed_core.v {stale}"
+    );
+    let manifest = std::fs::read_to_string(generated("encspeed_core.toml")).unwrap();
+    assert!(
+        e.manifest == manifest,
+        "generated/encspeed_core.toml {stale}"
+    );
+    // Emission is deterministic.
+    assert_eq!(e.verilog, hdl::emit_core(&default_params()).verilog);
+}
+
+#[test]
+fn manifest_records_the_parameters_and_ports() {
+    let m: toml::Value =
+        toml::from_str(&std::fs::read_to_string(generated("encspeed_core.toml")).unwrap()).unwrap();
+    let d = Spec::default();
+    assert_eq!(m["spec"]["clock_hz"].as_float(), Some(d.clock_hz));
+    assert_eq!(
+        m["spec"]["counter_bits"].as_integer(),
+        Some(d.counter_bits as i64)
+    );
+    assert_eq!(m["generator"]["top_module"].as_str(), Some("encspeed_core"));
+    // ω_lim = 100e6 / (1024 · 100000) rev/s, by hand.
+    assert_eq!(m["derived"]["omega_lim_rps"].as_float(), Some(0.9765625));
+    let ports: Vec<&str> = m["ports"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["name"].as_str().unwrap())
+        .collect();
+    // The ports of the module header, in order, are those of the manifest.
+    let header = format!("module encspeed_core({});", ports.join(","));
+    assert!(
+        shipped_verilog().contains(&header),
+        "Verilog lacks `{header}`"
+    );
+    for name in [
+        "clock", "reset", "enc_a", "enc_b", "enc_z", "cfg_dt", "nep", "ndt",
+    ] {
+        assert!(ports.contains(&name), "port {name} missing");
+    }
+}
+
+#[test]
+fn verilator_lint_is_clean_with_the_documented_waivers() {
+    tb::verilator::lint(&shipped_verilog()).unwrap();
+}
+
+#[test]
+fn yosys_synthesises_it_for_ice40_without_latches() {
+    let dir = tb::target_dir().join("yosys");
+    std::fs::create_dir_all(&dir).unwrap();
+    let v = dir.join("encspeed_core.v");
+    std::fs::write(&v, shipped_verilog()).unwrap();
+    let out = Command::new("yosys")
+        .arg("-p")
+        .arg(format!(
+            "read_verilog {}; synth_ice40 -top encspeed_core; check -assert; stat",
+            v.display()
+        ))
+        .output()
+        .expect("yosys is installed by .ci/run");
+    let log = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "yosys failed:\n{log}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // yosys says "No latch inferred for signal …" for each combinational signal it checked,
+    // and "Latch inferred for signal …" for a latch.
+    let latches: Vec<&str> = log
+        .lines()
+        .filter(|l| l.trim_start().starts_with("Latch inferred"))
+        .collect();
+    assert!(latches.is_empty(), "latches inferred: {latches:#?}");
+    assert!(log.contains("SB_LUT4"), "no logic synthesised:\n{log}");
+}
+
+/// Named scenarios with the motion scaled to a dt of 1000 cycles (driven on cfg_dt), so
+/// they are short enough for Icarus.
+fn scenario_inputs(p: &Params, cfg_dt: u64) -> Vec<(String, Vec<CoreInputs>)> {
+    let at_dt = Params::new(Spec {
+        dt_cycles: cfg_dt,
+        ..p.spec().clone()
+    })
+    .unwrap();
+    tb::scenarios::all()
+        .iter()
+        .map(|s| {
+            let prof = s.profile(&at_dt).unwrap();
+            (
+                s.name.to_string(),
+                tb::stimulus::from_profile(p, &prof, cfg_dt).unwrap(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn shipped_verilog_equals_golden_in_verilator() {
+    let p = default_params();
+    let v = Verilated::build(&shipped_verilog()).unwrap();
+    let mut cycles = 0;
+    for (name, inputs) in scenario_inputs(&p, 1000) {
+        let golden = run_golden(&p, &inputs);
+        assert_same(
+            &format!("{name} (verilator, shipped)"),
+            &inputs,
+            &golden,
+            &v.run(&inputs, None).unwrap(),
+        );
+        cycles += inputs.len();
+    }
+    // One scenario at the nominal dt of 100 000 cycles (1.2 million cycles).
+    let s = tb::scenarios::find("constant-high").unwrap();
+    let inputs = s.inputs(&p).unwrap();
+    let golden = run_golden(&p, &inputs);
+    assert_same(
+        "constant-high at nominal dt (verilator, shipped)",
+        &inputs,
+        &golden,
+        &v.run(&inputs, None).unwrap(),
+    );
+    cycles += inputs.len();
+    let last = golden.last().unwrap();
+    assert_eq!(
+        (last.nep, last.ndt),
+        (4, 1),
+        "3.3 ω_lim: Nep1 = ceil(3.3), Ndt1 = 1"
+    );
+    println!("{cycles} cycles identical");
+}
+
+#[test]
+fn shipped_verilog_equals_golden_in_icarus() {
+    let p = default_params();
+    let mut total = 0;
+    for (name, inputs) in scenario_inputs(&p, 400) {
+        let golden = run_golden(&p, &inputs);
+        let r = tb::icarus::replay(
+            &name,
+            &shipped_verilog(),
+            p.counter_bits(),
+            &inputs,
+            &golden,
+        )
+        .unwrap();
+        assert_eq!(
+            r.failed, 0,
+            "{name}: Icarus differs from the golden model on {} cycles",
+            r.failed
+        );
+        assert_eq!(
+            r.passed as usize,
+            inputs.len(),
+            "{name}: not every cycle was checked"
+        );
+        total += r.passed;
+    }
+    println!("{total} cycles identical in Icarus");
+}
