@@ -543,10 +543,11 @@ module encspeed_core$timebase(clock,reset,lep,dt,tick,restart,cdt,stalled);
     reg  [23:0] cdt_count$d;
     wire  [23:0] cdt_count$q;
     reg  cdt_count$clock;
+    reg  [23:0] dt_limit$d;
+    wire  [23:0] dt_limit$q;
+    reg  dt_limit$clock;
     
     // Local signals
-    reg  [23:0] count_plus;
-    reg  [23:0] dt_used;
     reg  restart_now;
     reg  tick_now;
     reg  [23:0] cdt_after_pulse;
@@ -562,21 +563,27 @@ module encspeed_core$timebase(clock,reset,lep,dt,tick,restart,cdt,stalled);
         .q(cdt_count$q),
         .clock(cdt_count$clock)
     );
+    encspeed_core$timebase$dt_limit dt_limit(
+        .d(dt_limit$d),
+        .q(dt_limit$q),
+        .clock(dt_limit$clock)
+    );
     
     // Update code
     always @(*) begin
         ts_count$clock = clock;
         cdt_count$clock = clock;
+        dt_limit$clock = clock;
         ts_count$d = ts_count$q;
         cdt_count$d = cdt_count$q;
+        dt_limit$d = dt_limit$q;
         restart_now = lep & (cdt_count$q != zero);
-        count_plus = ts_count$q + one;
-        dt_used = dt;
+        dt_limit$d = dt - one;
         if (dt < min_dt) begin
-            dt_used = min_dt;
+            dt_limit$d = one;
         end
-        tick_now = ~restart_now & (count_plus >= dt_used);
-        ts_count$d = count_plus;
+        tick_now = ~restart_now & (ts_count$q >= dt_limit$q);
+        ts_count$d = ts_count$q + one;
         if (restart_now | tick_now) begin
             ts_count$d = zero;
         end
@@ -618,6 +625,25 @@ module encspeed_core$timebase$cdt_count(d,q,clock);
     end
           
 endmodule // encspeed_core$timebase$cdt_count
+
+
+module encspeed_core$timebase$dt_limit(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$timebase$dt_limit
 
 
 module encspeed_core$timebase$ts_count(d,q,clock);

@@ -60,6 +60,18 @@ enum Cmd {
         #[arg(long, default_value_t = 20_000_000)]
         cycles: u64,
     },
+    /// Synthesise the core with yosys (synth_ice40) and place and route it with
+    /// nextpnr-ice40: logic cells, I/O and maximum clock frequency (a benchmark).
+    Synth {
+        #[command(flatten)]
+        spec: SpecArgs,
+        /// nextpnr-ice40 device option, e.g. hx8k, up5k, lp8k.
+        #[arg(long, default_value = "hx8k")]
+        device: String,
+        /// Package, e.g. ct256 (hx8k), sg48 (up5k).
+        #[arg(long, default_value = "ct256")]
+        package: String,
+    },
 }
 
 /// Generation parameters: a TOML file (fields of `Spec`) and/or options; options win.
@@ -162,6 +174,14 @@ fn main() -> ExitCode {
             .params()
             .map_err(|e| (2, e))
             .and_then(|p| bench(&p, cycles)),
+        Cmd::Synth {
+            spec,
+            device,
+            package,
+        } => spec
+            .params()
+            .map_err(|e| (2, e))
+            .and_then(|p| synth(&p, &device, &package)),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -299,5 +319,91 @@ fn bench(p: &Params, cycles: u64) -> Outcome {
         "Verilator -O3 (emitted .v)   {:>12.0} cycles/s ({cycles} cycles)",
         verilator_rate
     );
+    Ok(())
+}
+
+fn synth(p: &Params, device: &str, package: &str) -> Outcome {
+    let dir = tb::target_dir().join("synth");
+    std::fs::create_dir_all(&dir).map_err(|e| (1, e.to_string()))?;
+    std::fs::write(dir.join("encspeed_core.v"), hdl::emit_core(p).verilog)
+        .map_err(|e| (1, e.to_string()))?;
+    let clock = dir.join("clock.py");
+    std::fs::write(
+        &clock,
+        format!("ctx.addClock(\"clock\", {})\n", p.clock_hz() / 1e6),
+    )
+    .map_err(|e| (1, e.to_string()))?;
+    let run = |cmd: &mut std::process::Command, what: &str| -> Result<String, (u8, String)> {
+        let o = cmd
+            .current_dir(&dir)
+            .output()
+            .map_err(|e| (1, format!("cannot run {what}: {e}")))?;
+        let text = format!(
+            "{}{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        );
+        if o.status.success() {
+            Ok(text)
+        } else {
+            Err((1, format!("{what} failed:\n{text}")))
+        }
+    };
+    run(
+        std::process::Command::new("yosys").args([
+            "-q",
+            "-p",
+            "read_verilog encspeed_core.v; synth_ice40 -top encspeed_core -json core.json",
+        ]),
+        "yosys",
+    )?;
+    let log = run(
+        std::process::Command::new("nextpnr-ice40")
+            .arg(format!("--{device}"))
+            .args([
+                "--package",
+                package,
+                "--json",
+                "core.json",
+                "--asc",
+                "core.asc",
+            ])
+            .args([
+                "--pcf-allow-unconstrained",
+                "--timing-allow-fail",
+                "--seed",
+                "1",
+                "--pre-pack",
+                "clock.py",
+            ]),
+        "nextpnr-ice40",
+    )?;
+    // Utilisation is reported once (the line with a percentage); the routed Fmax is the
+    // last frequency line.
+    let tidy = |l: &str| {
+        let l = l.trim();
+        let l = l
+            .strip_prefix("Info:")
+            .or(l.strip_prefix("Warning:"))
+            .unwrap_or(l);
+        l.trim().to_string()
+    };
+    let first = |key: &str| {
+        log.lines()
+            .find(|l| l.contains(key) && l.contains('%'))
+            .map(tidy)
+    };
+    let last = |key: &str| log.lines().rev().find(|l| l.contains(key)).map(tidy);
+    let missing = |key: &str| (1, format!("no `{key}` in the nextpnr log"));
+    println!(
+        "device {device} {package}, {}-bit counters, clock constraint {} MHz",
+        p.counter_bits(),
+        p.clock_hz() / 1e6
+    );
+    for key in ["ICESTORM_LC:", "SB_IO:"] {
+        println!("{}", first(key).ok_or_else(|| missing(key))?);
+    }
+    let key = "Max frequency for clock";
+    println!("{}", last(key).ok_or_else(|| missing(key))?);
     Ok(())
 }

@@ -14,7 +14,9 @@ fn encspeed(args: &[&str]) -> Output {
 }
 
 fn scratch(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/cli-test").join(name);
+    let d = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("target/cli-test")
+        .join(name);
     let _ = std::fs::remove_dir_all(&d);
     d
 }
@@ -25,20 +27,34 @@ fn generate_with_defaults_reproduces_generated_dir() {
     let o = encspeed(&["generate", "--out", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     for f in ["encspeed_core.v", "encspeed_core.toml"] {
-        let shipped = std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("generated").join(f)).unwrap();
+        let shipped = std::fs::read(
+            Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("generated")
+                .join(f),
+        )
+        .unwrap();
         assert_eq!(std::fs::read(out.join(f)).unwrap(), shipped, "{f}");
     }
 }
 
 #[test]
 fn the_command_in_the_header_regenerates_the_file() {
-    let v = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("generated/encspeed_core.v")).unwrap();
-    let cmd = v.lines().find_map(|l| l.strip_prefix("// Command: ")).expect("header names the command");
+    let v = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("generated/encspeed_core.v"),
+    )
+    .unwrap();
+    let cmd = v
+        .lines()
+        .find_map(|l| l.strip_prefix("// Command: "))
+        .expect("header names the command");
     let out = scratch("header-command");
     let mut args: Vec<&str> = cmd.split_whitespace().skip(1).collect();
     args.extend(["--out", out.to_str().unwrap()]);
     assert!(encspeed(&args).status.success());
-    assert_eq!(std::fs::read_to_string(out.join("encspeed_core.v")).unwrap(), v);
+    assert_eq!(
+        std::fs::read_to_string(out.join("encspeed_core.v")).unwrap(),
+        v
+    );
 }
 
 #[test]
@@ -60,7 +76,10 @@ fn bad_parameters_exit_2_naming_the_parameter_and_write_nothing() {
         let o = encspeed(&args);
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{extra:?}: {err}");
-        assert!(err.contains(name) || err.contains(&name.replace('_', "-")), "{extra:?}: `{err}` should name {name}");
+        assert!(
+            err.contains(name) || err.contains(&name.replace('_', "-")),
+            "{extra:?}: `{err}` should name {name}"
+        );
         assert!(!out.exists(), "{extra:?}: wrote {}", out.display());
     }
 }
@@ -72,14 +91,26 @@ fn configuration_file_is_read_and_checked() {
     let good = dir.join("good.toml");
     std::fs::write(&good, "counter_bits = 20\ndt_cycles = 50000\n").unwrap();
     let out = dir.join("out");
-    let o = encspeed(&["generate", "--config", good.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = encspeed(&[
+        "generate",
+        "--config",
+        good.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let v = std::fs::read_to_string(out.join("encspeed_core.v")).unwrap();
     assert!(v.contains("--dt-cycles 50000 --counter-bits 20"));
     assert!(v.contains("input wire  [19:0] cfg_dt;"));
     let bad = dir.join("bad.toml");
     std::fs::write(&bad, "counter_bitz = 20\n").unwrap();
-    let o = encspeed(&["generate", "--config", bad.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = encspeed(&[
+        "generate",
+        "--config",
+        bad.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("counter_bitz"));
 }
@@ -104,7 +135,13 @@ fn simulate_writes_a_vcd_where_asked() {
     let header = std::fs::read_to_string(&vcd).unwrap();
     assert!(header.contains("$var wire 1 ") && header.contains(" ndt $end"));
 
-    let o = encspeed(&["simulate", "--motion", "hold:2", "--vcd", vcd.to_str().unwrap()]);
+    let o = encspeed(&[
+        "simulate",
+        "--motion",
+        "hold:2",
+        "--vcd",
+        vcd.to_str().unwrap(),
+    ]);
     assert_eq!(o.status.code(), Some(2));
     let o = encspeed(&["simulate", "--scenario", "nope"]);
     assert_eq!(o.status.code(), Some(2));

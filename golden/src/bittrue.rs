@@ -12,7 +12,9 @@
 //! on the A samples A₁, A₂, … taken at the clock edges after reset, with lep_k = A_k ∧ ¬A_{k−1}
 //! and A₀ := A₁, delayed by [`CORE_LATENCY_CYCLES`] clock cycles; the ts/dt time base is held
 //! in reset for those cycles so that the delay is a pure latency (the `core_is_table1_delayed`
-//! test checks this equivalence).
+//! test checks this equivalence). `cfg_dt` is registered: a change reaches Table 1 one
+//! clock edge after it is applied (so dt changes are seen one cycle earlier, relative to the
+//! pulses, than in the delayed-Table-1 picture; with a constant dt this does not matter).
 
 use crate::params::{Params, CORE_LATENCY_CYCLES, MIN_DT_CYCLES};
 
@@ -173,6 +175,9 @@ pub struct FrontState {
     pub prev_a: bool,
     /// Clock edges since reset, saturating at 3 (start-up sequencing).
     pub fill: u8,
+    /// `cfg_dt` registered at the last edge, values below 2 as 2 (the hardware holds
+    /// dt − 1; it is not reset).
+    pub dt_reg: u64,
 }
 
 /// Bit-true model of the whole `encspeed_core`.
@@ -210,15 +215,20 @@ impl CoreModel {
         if engine_reset {
             self.engine.reset();
         } else {
-            self.engine.step(lep, inp.cfg_dt);
+            self.engine.step(lep, f.dt_reg);
         }
+        let dt_reg = inp.cfg_dt.max(MIN_DT_CYCLES);
         self.front = if inp.reset {
-            FrontState::default()
+            FrontState {
+                dt_reg,
+                ..FrontState::default()
+            }
         } else {
             FrontState {
                 sync_a: [inp.enc_a, f.sync_a[0]],
                 prev_a: f.sync_a[1],
                 fill: (f.fill + 1).min(3),
+                dt_reg,
             }
         };
         let o = self.engine.outputs();

@@ -30,9 +30,10 @@ pub fn er3_max(n1: f64) -> f64 {
 ///
 /// Derivation (DESIGN-NOTES §3, worked in docs/accuracy.md): with pulse instants rounded
 /// up to the clock, q_i ∈ [t_i, t_i + 1) cycles.
-/// - High speed: Nep1 counts the q_i in [q_0, q_0 + dt), which lies between the count of
-///   exact instants in a window of dt − 1 and of dt + 1 cycles: the estimator behaves as
-///   the exact one at a speed r' with |r'/r − 1| ≤ 1/(dt − 1).
+/// - High speed: Nep1 counts the q_i in [q_0, q_0 + dt). The q_i are whole cycles, so
+///   q_i − q_0 ≤ dt − 1 and t_i − t_0 < dt: the count is that of exact instants in a
+///   window between dt − 1 and dt cycles long, i.e. the exact estimator at a speed r' with
+///   r(1 − 1/dt) < r' ≤ r, within the bound below.
 /// - Low speed: Ndt1 comes from a pulse interval T' = q_1 − q_0 with |T' − T| < 1 and
 ///   T ≥ dt, so again |r'/r − 1| = |T/T' − 1| ≤ 1/(T − 1) ≤ 1/(dt − 1).
 ///

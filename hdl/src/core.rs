@@ -10,7 +10,8 @@
 //! Ports (all synchronous to `clock`, reset synchronous and active high):
 //! - `enc_a`, `enc_b`, `enc_z`: raw encoder channels (asynchronous). The x1 estimator uses
 //!   A only; B and Z are reserved for quadrature decoding and the index.
-//! - `cfg_dt[N-1:0]`: dt in clock cycles (values below 2 are used as 2 and flag `cfg_error`).
+//! - `cfg_dt[N-1:0]`: dt in clock cycles, registered: a change takes effect one cycle later
+//!   (values below 2 are used as 2 and flag `cfg_error`).
 //! - `nep[N-1:0]`, `ndt[N-1:0]`: Nep1 and Ndt1 of Rairán's Table 1 (0 and 1 after reset).
 //! - `update`: one cycle high when `nep` or `ndt` has just been written.
 //! - `stalled`: no pulse for the zero-speed timeout.

@@ -7,10 +7,12 @@
 //! interval: `restart` is high, the ts counter returns to zero and the tick of that cycle
 //! is cancelled (lines 5-7). A pulse on a tick clears Cdt and the tick then counts it to 1.
 //!
-//! dt comes from the runtime input `dt`; values below 2 are used as 2. The comparison is
-//! `count + 1 >= dt` so that lowering dt at run time ends the interval at once instead of
-//! letting the counter run to its limit; with a constant dt it equals the paper's
-//! `clock == dt`. Cdt saturates at 2^N − 1 instead of wrapping.
+//! dt comes from the runtime input `dt`, registered (as dt − 1, values below 2 used as 2) so
+//! that the port is not on the critical path: a change of `dt` takes effect one clock
+//! later. The comparison is `count >= dt − 1`, i.e. `count + 1 >= dt`, so that lowering dt
+//! at run time ends the interval at once instead of letting the counter run to its limit;
+//! with a constant dt it equals the paper's `clock == dt`. Cdt saturates at 2^N − 1
+//! instead of wrapping.
 //!
 //! `tick` and `restart` are combinational (from `lep` and the registers); `cdt` and
 //! `stalled` come from the Cdt register.
@@ -38,8 +40,7 @@ pub struct Timebase<const N: usize> {
     pub stalled: Signal<Out, Bit>,
     pub(crate) ts_count: DFF<Bits<N>>,
     cdt_count: DFF<Bits<N>>,
-    count_plus: Signal<Local, Bits<N>>,
-    dt_used: Signal<Local, Bits<N>>,
+    dt_limit: DFF<Bits<N>>,
     restart_now: Signal<Local, Bit>,
     tick_now: Signal<Local, Bit>,
     cdt_after_pulse: Signal<Local, Bits<N>>,
@@ -69,8 +70,7 @@ impl<const N: usize> Timebase<N> {
             stalled: Default::default(),
             ts_count: Default::default(),
             cdt_count: Default::default(),
-            count_plus: Default::default(),
-            dt_used: Default::default(),
+            dt_limit: Default::default(),
             restart_now: Default::default(),
             tick_now: Default::default(),
             cdt_after_pulse: Default::default(),
@@ -86,19 +86,19 @@ impl<const N: usize> Timebase<N> {
 impl<const N: usize> Logic for Timebase<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, ts_count, cdt_count);
+        dff_setup!(self, clock, ts_count, cdt_count, dt_limit);
         // Line 5: a pulse after at least one tick restarts the interval.
         self.restart_now.next = self.lep.val() & (self.cdt_count.q.val() != self.zero.val());
-        // count + 1 cannot overflow: the count never exceeds the largest dt minus one.
-        self.count_plus.next = self.ts_count.q.val() + self.one.val();
-        self.dt_used.next = self.dt.val();
+        // dt − 1, with dt below 2 used as 2.
+        self.dt_limit.d.next = self.dt.val() - self.one.val();
         if self.dt.val() < self.min_dt.val() {
-            self.dt_used.next = self.min_dt.val();
+            self.dt_limit.d.next = self.one.val();
         }
         // Line 8/12: never in a restart cycle (the count was just set to zero, dt >= 2).
         self.tick_now.next =
-            !self.restart_now.val() & (self.count_plus.val() >= self.dt_used.val());
-        self.ts_count.d.next = self.count_plus.val();
+            !self.restart_now.val() & (self.ts_count.q.val() >= self.dt_limit.q.val());
+        // count + 1 cannot overflow: the count never exceeds the largest dt − 1.
+        self.ts_count.d.next = self.ts_count.q.val() + self.one.val();
         if self.restart_now.val() | self.tick_now.val() {
             self.ts_count.d.next = self.zero.val();
         }

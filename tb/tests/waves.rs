@@ -23,7 +23,10 @@ fn vcd_holds_ports_and_internal_counters_of_every_cycle() {
         timeout_s: 8.0 * 50.0 / 1e6,
     })
     .unwrap();
-    let inputs = tb::scenarios::find("speed-steps").unwrap().inputs(&p).unwrap();
+    let inputs = tb::scenarios::find("speed-steps")
+        .unwrap()
+        .inputs(&p)
+        .unwrap();
     let path = tb::target_dir().join("waves/test-speed-steps.vcd");
     let outs = tb::waves::simulate_to_vcd(&p, &inputs, &path).unwrap();
 
@@ -46,7 +49,15 @@ fn vcd_holds_ports_and_internal_counters_of_every_cycle() {
         // After the k-th rising edge, at time (k + 1) periods.
         let t = (k as u64 + 1) * period;
         let got: Vec<u64> = names.iter().map(|n| at(&w[*n], t)).collect();
-        let want = vec![inp.enc_a as u64, o.nep, o.ndt, o.update as u64, s.clock, s.cdt, s.cep];
+        let want = vec![
+            inp.enc_a as u64,
+            o.nep,
+            o.ndt,
+            o.update as u64,
+            s.clock,
+            s.cdt,
+            s.cep,
+        ];
         assert_eq!(got, want, "cycle {k}: VCD {names:?}");
     }
     // The speed steps reach 8 ω_lim: Nep1 = 8 appears in the VCD.
