@@ -333,21 +333,8 @@ fn synth(p: &Params, device: &str, package: &str) -> Outcome {
         format!("ctx.addClock(\"clock\", {})\n", p.clock_hz() / 1e6),
     )
     .map_err(|e| (1, e.to_string()))?;
-    let run = |cmd: &mut std::process::Command, what: &str| -> Result<String, (u8, String)> {
-        let o = cmd
-            .current_dir(&dir)
-            .output()
-            .map_err(|e| (1, format!("cannot run {what}: {e}")))?;
-        let text = format!(
-            "{}{}",
-            String::from_utf8_lossy(&o.stdout),
-            String::from_utf8_lossy(&o.stderr)
-        );
-        if o.status.success() {
-            Ok(text)
-        } else {
-            Err((1, format!("{what} failed:\n{text}")))
-        }
+    let run = |cmd: &mut std::process::Command, what: &str| {
+        tb::run_tool(cmd.current_dir(&dir), what).map_err(|e| (1, e))
     };
     run(
         std::process::Command::new("yosys").args([

@@ -123,3 +123,22 @@ impl<const N: usize> Logic for EncspeedCore<N> {
         self.cfg_error.next = self.cfg_dt.val() < self.min_dt.val();
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn synthesises() {
+        let p = Params::new(golden::params::Spec {
+            counter_bits: 12,
+            dt_cycles: 1000,
+            timeout_s: 1e-3,
+            ..Default::default()
+        })
+        .unwrap();
+        let mut uut = EncspeedCore::<12>::new(&p);
+        uut.connect_all();
+        yosys_validate("encspeed_core", &generate_verilog(&uut)).unwrap();
+    }
+}

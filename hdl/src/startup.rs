@@ -57,3 +57,42 @@ impl Logic for Startup {
         self.edge_enable.next = self.edges_seen.q.val() == self.three.val();
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn runs_the_engine_after_two_edges_and_enables_edges_after_three() {
+        let mut uut = Startup::default();
+        uut.connect_all();
+        // Edge 0 with reset, then edges 1, 2, 3, 4 without: (engine_run, edge_enable)
+        // after each edge, by hand.
+        let expect = [
+            (false, false),
+            (false, false),
+            (true, false),
+            (true, true),
+            (true, true),
+        ];
+        for (k, e) in expect.iter().enumerate() {
+            uut.reset.next = k == 0;
+            uut.clock.next = Clock { clk: false };
+            assert!(simulate(&mut uut, 10));
+            uut.clock.next = Clock { clk: true };
+            assert!(simulate(&mut uut, 10));
+            assert_eq!(
+                (uut.engine_run.val(), uut.edge_enable.val()),
+                *e,
+                "after edge {k}"
+            );
+        }
+    }
+
+    #[test]
+    fn synthesises() {
+        let mut uut = Startup::default();
+        uut.connect_all();
+        yosys_validate("encspeed_startup", &generate_verilog(&uut)).unwrap();
+    }
+}

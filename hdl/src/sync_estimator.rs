@@ -95,3 +95,15 @@ impl<const N: usize> Logic for SyncEstimator<N> {
         self.update.next = self.update_reg.q.val();
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn synthesises() {
+        let mut uut = SyncEstimator::<8>::default();
+        uut.connect_all();
+        yosys_validate("encspeed_sync_estimator", &generate_verilog(&uut)).unwrap();
+    }
+}

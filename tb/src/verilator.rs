@@ -30,22 +30,6 @@ fn fnv1a(parts: &[&str]) -> u64 {
     h
 }
 
-fn run_checked(cmd: &mut Command, what: &str) -> Result<String, String> {
-    let out = cmd
-        .output()
-        .map_err(|e| format!("cannot run {what}: {e} (install it: see .ci/run)"))?;
-    let text = format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    if out.status.success() {
-        Ok(text)
-    } else {
-        Err(format!("{what} failed ({}):\n{text}", out.status))
-    }
-}
-
 /// Write the emitted Verilog and the waivers into `dir` for a tool to read.
 pub fn stage(dir: &Path, verilog: &str) -> std::io::Result<(PathBuf, PathBuf)> {
     std::fs::create_dir_all(dir)?;
@@ -62,7 +46,7 @@ pub fn lint(verilog: &str) -> Result<String, String> {
         .join("verilator")
         .join(format!("lint-{:016x}", fnv1a(&[verilog])));
     let (v, w) = stage(&dir, verilog).map_err(|e| e.to_string())?;
-    run_checked(
+    crate::run_tool(
         Command::new("verilator")
             .args(["--lint-only", "-Wall", "--top-module", "encspeed_core"])
             .arg(&w)
@@ -88,7 +72,7 @@ impl Verilated {
         let (v, w) = stage(&tmp, verilog).map_err(|e| e.to_string())?;
         let h = tmp.join("harness.cpp");
         std::fs::write(&h, HARNESS).map_err(|e| e.to_string())?;
-        run_checked(
+        crate::run_tool(
             Command::new("verilator")
                 .current_dir(&tmp)
                 .args(["--cc", "--exe", "--build", "-O3", "--trace", "-j", "2"])
@@ -178,7 +162,7 @@ impl Verilated {
     /// Benchmark: cycles per second of the compiled Verilog on a square wave of `period`
     /// cycles with dt = `dt` (see the harness's `--bench`).
     pub fn bench(&self, cycles: u64, period: u64, dt: u64) -> Result<f64, String> {
-        let out = run_checked(
+        let out = crate::run_tool(
             Command::new(&self.exe).args([
                 "--bench",
                 &cycles.to_string(),
