@@ -2,7 +2,8 @@
 //!
 //! Layer 1 (float ideal): [`plant`] turns shaft motion into exact A/B/Z edge instants and
 //! clock samples; [`ideal`] runs Rairán's estimator and the classical PC/ET estimators in
-//! continuous time; [`rairan`] holds the paper's closed-form estimates and error bounds.
+//! continuous time; [`mt`] is the M/T estimator (groundwork for the hardware M/T);
+//! [`rairan`] holds the paper's error bounds and the hardware's error budget.
 //! Layer 2 (bit-true): [`bittrue`] computes, cycle for cycle and in the hardware's integer
 //! widths, what `encspeed_core` computes. [`params`] is the one validated parameter type
 //! shared by the golden model, the HDL constructors and the generated manifest.
@@ -10,7 +11,12 @@
 //! This crate never depends on rust-hdl.
 
 pub mod bittrue;
+pub mod divider;
+pub mod eccentric;
+pub mod frontend;
 pub mod ideal;
+pub mod mt;
 pub mod params;
 pub mod plant;
 pub mod rairan;
+pub mod smallsignal;

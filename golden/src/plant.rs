@@ -177,7 +177,7 @@ impl Segment {
 
     /// Instants τ ∈ (0, duration), ascending, where the speed changes sign. Tangential
     /// zeros (|amplitude| = |mean|) are not reported: the motion stays monotone there.
-    fn sign_changes(&self) -> Vec<f64> {
+    pub fn sign_changes(&self) -> Vec<f64> {
         match *self {
             Self::Ramp { from, to, duration } if from * to < 0.0 => {
                 vec![duration * from / (from - to)]

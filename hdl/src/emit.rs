@@ -6,6 +6,7 @@
 
 use crate::sim::build_core;
 use golden::params::{Params, Spec, CORE_LATENCY_CYCLES};
+use rust_hdl::prelude::{check_all, Block, ModuleDefines};
 use serde::Serialize;
 
 /// Name of the top module in the emitted Verilog.
@@ -127,6 +128,15 @@ fn ports(n: u32) -> Vec<Port> {
         ),
         p("cfg_error", "output", 1, "cfg_dt < 2 (combinational)"),
     ]
+}
+
+/// The Verilog of any connected block, checked by rust-hdl, with its top module named
+/// `module_name` (rust-hdl's own `generate_verilog` always names it `top`).
+pub fn named_verilog(uut: &dyn Block, module_name: &str) -> String {
+    check_all(uut).expect("rust-hdl design check");
+    let mut defines = ModuleDefines::default();
+    uut.accept(module_name, &mut defines);
+    defines.defines()
 }
 
 /// The `encspeed` command line that regenerates the files for `p` (every parameter given

@@ -9,21 +9,41 @@
 //! | [`Timebase`] | `timebase.rs` | ts/dt time base with runtime dt |
 //! | [`SyncEstimator`] | `sync_estimator.rs` | Table 1 registers Cep, Cdt, Nep1, Ndt1 |
 //!
+//! Blocks built and verified on their own (rust-hdl and Icarus against their golden models)
+//! and not yet part of `encspeed_core`:
+//!
+//! | block | file | what it does |
+//! |---|---|---|
+//! | [`GlitchFilter`] | `glitch_filter.rs` | passes a level after `cfg_filter` stable cycles, counts rejected glitches |
+//! | [`QuadratureDecoder`] | `quadrature_decoder.rs` | x1/x2/x4 steps with direction, illegal-transition flag and counter |
+//! | [`PositionCounter`] | `position_counter.rs` | position modulo counts per revolution, Z reset/latch, revolution check |
+//! | [`SeqDivider`] | `seq_divider.rs` | unsigned radix-2 divider, one quotient bit per clock |
+//!
 //! [`build_core`] turns validated [`Params`](golden::params::Params) into a core of the right
 //! counter width behind the [`CoreSim`] trait (rust-hdl widths are const generics).
 
 pub mod core;
 pub mod emit;
+pub mod glitch_filter;
+pub mod position_counter;
+pub mod quadrature_decoder;
 pub mod rising_edge;
+pub mod seq_divider;
 pub mod sim;
 pub mod startup;
 pub mod sync_estimator;
+#[cfg(test)]
+mod test_support;
 pub mod timebase;
 pub mod two_flop_sync;
 
 pub use crate::core::EncspeedCore;
 pub use emit::{emit_core, EmitInfo};
+pub use glitch_filter::{glitch_filter_verilog, GlitchFilter};
+pub use position_counter::{position_counter_verilog, PositionCounter};
+pub use quadrature_decoder::{quadrature_decoder_verilog, QuadratureDecoder};
 pub use rising_edge::RisingEdge;
+pub use seq_divider::{seq_divider_verilog, SeqDivider};
 pub use sim::{build_core, CoreSim};
 pub use startup::Startup;
 pub use sync_estimator::SyncEstimator;

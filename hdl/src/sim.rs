@@ -127,10 +127,7 @@ impl<const N: usize> CoreSim for Driven<N> {
     }
 
     fn verilog(&self, module_name: &str) -> String {
-        check_all(&self.uut).expect("rust-hdl design check");
-        let mut defines = ModuleDefines::default();
-        self.uut.accept(module_name, &mut defines);
-        defines.defines()
+        crate::emit::named_verilog(&self.uut, module_name)
     }
 
     fn start_vcd(&mut self, out: Box<dyn Write>, period_ps: u64) {
