@@ -13,6 +13,7 @@
 pub mod bittrue;
 pub mod divider;
 pub mod eccentric;
+pub mod freqresp;
 pub mod frontend;
 pub mod ideal;
 pub mod mt;
@@ -20,3 +21,4 @@ pub mod params;
 pub mod plant;
 pub mod rairan;
 pub mod smallsignal;
+pub mod speed_calc;

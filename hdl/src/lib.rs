@@ -18,6 +18,7 @@
 //! | [`QuadratureDecoder`] | `quadrature_decoder.rs` | x1/x2/x4 steps with direction, illegal-transition flag and counter |
 //! | [`PositionCounter`] | `position_counter.rs` | position modulo counts per revolution, Z reset/latch, revolution check |
 //! | [`SeqDivider`] | `seq_divider.rs` | unsigned radix-2 divider, one quotient bit per clock |
+//! | [`SpeedCalc`] | `speed_calc.rs` | Rairán n1, n2, n3 as signed fixed point (sequential divider and multiplier) |
 //!
 //! [`build_core`] turns validated [`Params`](golden::params::Params) into a core of the right
 //! counter width behind the [`CoreSim`] trait (rust-hdl widths are const generics).
@@ -30,6 +31,7 @@ pub mod quadrature_decoder;
 pub mod rising_edge;
 pub mod seq_divider;
 pub mod sim;
+pub mod speed_calc;
 pub mod startup;
 pub mod sync_estimator;
 #[cfg(test)]
@@ -45,6 +47,7 @@ pub use quadrature_decoder::{quadrature_decoder_verilog, QuadratureDecoder};
 pub use rising_edge::RisingEdge;
 pub use seq_divider::{seq_divider_verilog, SeqDivider};
 pub use sim::{build_core, CoreSim};
+pub use speed_calc::{speed_calc_verilog, SpeedCalc};
 pub use startup::Startup;
 pub use sync_estimator::SyncEstimator;
 pub use timebase::Timebase;
