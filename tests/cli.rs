@@ -147,3 +147,49 @@ fn simulate_writes_a_vcd_where_asked() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--list"));
 }
+
+#[test]
+fn bode_writes_csv_and_svg_and_refuses_bad_arguments() {
+    let dir = scratch("bode");
+    let csv = dir.join("et.csv");
+    let svg = dir.join("et.svg");
+    let o = encspeed(&[
+        "bode",
+        "--estimator",
+        "et",
+        "--lines",
+        "125",
+        "--rpm",
+        "100",
+        "--ts-s",
+        "1e-3",
+        "--points",
+        "3",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(
+        text.starts_with("f_hz,model_gain_db,model_phase_deg,measured_gain_db,measured_phase_deg")
+    );
+    assert_eq!(text.lines().count(), 4, "{text}");
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+    for (args, name) in [
+        (vec!["--rpm=-3", "--ts-s", "1e-3"], "--rpm"),
+        (vec!["--rpm", "100", "--ts-s", "0"], "--ts-s"),
+        (
+            vec!["--rpm", "100", "--ts-s", "1e-4", "--fmax", "6000"],
+            "--fmax",
+        ),
+    ] {
+        let mut a = vec!["bode", "--estimator", "et", "--lines", "125"];
+        a.extend(args.iter().copied());
+        let o = encspeed(&a);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(name), "{args:?}: `{err}` should name {name}");
+    }
+}

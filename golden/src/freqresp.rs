@@ -12,10 +12,10 @@
 //!    R = lines·`edges` transitions per revolution: `edges` = 1 counts rising edges of A,
 //!    2 both edges of A, 4 every edge of A and B (quadrature ×4). The paper's R is this R
 //!    (its Table I: 1, 2 or 4 times the lines).
-//! 2. **Estimators**, each producing one value per control sample t_k = k·T_s (k ≥ 1), in
-//!    rev/s, the latest estimate at t_k as a sampled controller reads it:
-//!    - [`Estimator::Pc`], fixed time: transitions counted in [t_{k−1}, t_k)
-//!      ([`ideal::fixed_time`]), divided by R·T_s.
+//! 2. **Estimators**, each producing one value y_k per control sample t_k = k·T_s (k ≥ 1),
+//!    in rev/s, the latest estimate at t_k as a sampled controller reads it:
+//!    - [`Estimator::Pc`], fixed time: transitions counted in the window from t_(k−1)
+//!      (included) to t_k (excluded) ([`ideal::fixed_time`]), divided by R·T_s.
 //!    - [`Estimator::Et`], fixed space: the time between the last two transitions before
 //!      t_k counted in periods of a clock of `clock_hz` ([`ideal::fixed_space`]).
 //!    - [`Estimator::N3`], Rairán's synchronised estimator: the bit-true core
@@ -24,40 +24,49 @@
 //!    - [`Estimator::Mt`], M/T ([`mt::mt_estimates`]): transitions since the last
 //!      measurement over the time between the first and last of them, timestamps
 //!      quantised to the clock.
-//! 3. **Analysis.** A settling transient of `settle` samples is discarded; the next N
-//!    samples span exactly P periods of the modulation (the frequency is moved to
-//!    f = P/(N·T_s), the nearest such frequency, and reported). The single DFT bin of the
-//!    output at f is divided by the same bin of the input sampled at the same instants:
-//!    H_sampled(f) = Σ y[k]·e^{−j2πft_k} / Σ ñ·sin(2πft_k)·e^{−j2πft_k}. This is what a
-//!    controller sampling at t_k sees: an estimate that equals the speed delayed by D
-//!    measures e^{−j2πfD}, so a pure delay of T_s/2 measures −180°·f·T_s.
+//! 3. **Analysis** ([`Experiment::plan`], [`Experiment::analyse`]). A settling transient
+//!    of `settle` samples is discarded; the next N samples span exactly P periods of the
+//!    modulation (the frequency is moved to f = P/(N·T_s), the nearest such frequency, and
+//!    reported). The single DFT bin of the output at f is divided by the same bin of the
+//!    input sampled at the same instants:
+//!    H_sampled(f) = Σ y_k·e^(−j2πf·t_k) / Σ ñ·sin(2πf·t_k)·e^(−j2πf·t_k), the sums over
+//!    the window, f·t_k = P·k/N reduced in integers. This is what a controller sampling at
+//!    t_k sees: an estimate equal to the speed delayed by D measures e^(−j2πfD), so a pure
+//!    delay of T_s/2 measures −180°·f·T_s.
 //! 4. **Convention of the models.** The paper's models include the sample-and-hold of the
 //!    control loop, ZOH(s, T_s) (eqs. 15, 16, 24), because its analyser compared the
 //!    continuous DAC staircase with the continuous input. The Fourier coefficient at f of
-//!    that staircase (y[k] held over [t_k, t_k + T_s)) over the window, divided by the one
+//!    that staircase (y_k held from t_k to t_k + T_s) over the window, divided by the one
 //!    of n(t), is exactly H(f) = H_sampled(f)·ZOH(j2πf, T_s). [`Measurement::h`] is this
-//!    H and is what is compared with the models; [`Measurement::h_sampled`] is kept.
+//!    H and is what is compared with the models; [`Measurement::h_sampled`] is kept. The
+//!    measured phase is reported on the model's branch (the difference wrapped into
+//!    (−180°, 180°]).
 //!
 //! **Asynchrony (why the mean speed is detuned).** The small-signal models describe the
 //! response averaged over the phase of the encoder relative to the sample instants (the
 //! paper's Appendix B and Fig. 5: a delay "uniformly distributed"). In the laboratory the
 //! VCO and the DSP clock are independent, so that phase drifts. In a simulation with
-//! n̄·R·T_s/60 an integer or a simple fraction (3600 r/min, R = 500, T_s = 1 ms gives
-//! exactly 30 transitions per sample) it does not: the phase is frozen and a PC estimator
-//! with |position modulation| < ½ transition never changes its count. The mean speed is
-//! therefore simulated at n̄·(1 + ε), ε = [`BodeSpec::detune`] (default
-//! [`DEFAULT_DETUNE`]), which makes the phase drift by ε·l transitions per sample; every
-//! model is evaluated at that simulated speed. ε = 0 reproduces the synchronous case.
+//! l = n̄·R·T_s/60 an integer or a simple fraction (3600 r/min, R = 500, T_s = 1 ms is
+//! exactly 30 transitions per sample) it does not: the phase is frozen, a PC count with
+//! a position modulation below one transition never changes, and ET sees the age of the
+//! last transition take a few values only. The mean speed is therefore simulated at
+//! n̄·(1 + ε), ε = [`BodeSpec::detune`] (default [`DEFAULT_DETUNE`]): the encoder phase
+//! slips against the sample grid by ε·l transitions per sample, and the window N is a
+//! whole number of slips of one transition ([`Experiment::samples_per_slip`]), so that
+//! every phase is visited equally (n3 at high speed also needs a long window:
+//! [`Experiment::min_window`]). Every model is evaluated at the simulated speed.
+//! ε = 0 reproduces the synchronous case.
 //!
 //! **Amplitude.** With the phase averaged, PC, ET and M/T are linear in expectation for
 //! any ñ (their outputs are windowed means of the speed); ñ only has to stay well below n̄
-//! (no reversal, and second-order terms such as the 1/T weighting of M/T small) and well
-//! above the residual quantisation noise of a finite window. The default ñ/n̄ = 1 % does
-//! both; `golden/tests/freqresp.rs` checks that the measurement does not move when ñ/n̄
-//! changes from 0.3 % to 3 %. Rairán's n3 is different: its windows start at encoder
-//! pulses, so its quantisation is never dithered by asynchrony and its output is a
-//! quantiser of step ω_lim. Its gain depends on ñ/ω_lim (a describing function), its
-//! phase hardly; see docs/frequency-response.md.
+//! (no reversal; the second-order terms, such as the choice of the last transition or the
+//! decay rule of M/T, small) and well above the residual quantisation noise of a finite
+//! window, which falls as 1/ñ. The default ñ/n̄ = 2 % does both; `golden/tests/freqresp.rs`
+//! checks that the measurement moves by less than 0.5° from 0.5 % to 5 %. Rairán's n3 is
+//! different: its windows start at encoder pulses, so its quantisation is never dithered
+//! by asynchrony and its output is a quantiser of step ω_lim. Its gain depends on ñ/ω_lim
+//! (a describing function), its phase hardly; hence a default of 20 %
+//! ([`DEFAULT_AMPLITUDE_N3`]). docs/frequency-response.md has the figures.
 
 use crate::bittrue::{CoreInputs, CoreModel, CoreOutputs};
 use crate::ideal::{self, update_interval};
@@ -226,7 +235,18 @@ impl FreqRespError {
             E::Window { name } => name,
             E::OperatingPoint(_) => "rpm",
             E::Core(_) => "clock-hz",
-            E::Frequency { .. } | E::Sweep { .. } => "fmax",
+            E::Frequency { .. } => "fmax",
+            E::Sweep {
+                fmin_hz, points, ..
+            } => {
+                if !(1..=10_000).contains(points) {
+                    "points"
+                } else if !(fmin_hz.is_finite() && *fmin_hz > 0.0) {
+                    "fmin"
+                } else {
+                    "fmax"
+                }
+            }
             E::TooLong { .. } => "fmin",
         }
     }
@@ -281,8 +301,9 @@ impl fmt::Display for FreqRespError {
                 points,
             } => write!(
                 f,
-                "fmax: sweep fmin = {fmin_hz} Hz, fmax = {fmax_hz} Hz, points = {points}: need \
-                 0 < fmin <= fmax, 1 <= points <= 10000, and points = 1 when fmin = fmax"
+                "{}: sweep fmin = {fmin_hz} Hz, fmax = {fmax_hz} Hz, points = {points}: need \
+                 0 < fmin <= fmax, 1 <= points <= 10000, and points = 1 when fmin = fmax",
+                self.parameter()
             ),
         }
     }
@@ -387,20 +408,21 @@ impl FreqModel {
         }
     }
 
-    /// Gain and phase at f (Hz). The phase is continuous in f: for a product, the factors'
-    /// phases summed (see [`crate::smallsignal::BodePoint::phase_deg`]); for the mixture,
-    /// −2πf·D plus the principal argument of H·e^{j2πfD}, D its low-frequency delay.
+    /// Gain and phase at f (Hz), the phase continuous in f with the convention of
+    /// [`crate::smallsignal::BodePoint::phase_deg`]. Both terms of the mixture have the
+    /// phase −2πf·D, D = T_s + T_e/2 (docs/frequency-response.md), so H·e^{j2πfD} is real
+    /// and is the signed amplitude.
     pub fn at(&self, f_hz: f64) -> BodePoint {
         match self {
             FreqModel::Product(m) => m.at(f_hz),
             FreqModel::MtMixture { .. } => {
                 let d = self.low_frequency_delay_s();
                 let w = 2.0 * PI * f_hz;
-                let h = self.response(f_hz);
-                let rest = h * Complex64::from_polar(1.0, w * d);
+                let real = self.response(f_hz) * Complex64::from_polar(1.0, w * d);
+                debug_assert!(real.im.abs() <= 1e-9 * (1.0 + real.re.abs()));
                 Polar {
-                    amplitude: h.norm(),
-                    phase_rad: -w * d + rest.arg(),
+                    amplitude: real.re,
+                    phase_rad: -w * d,
                 }
                 .to_bode_point(f_hz)
             }
@@ -433,7 +455,10 @@ fn mt_mixture(f_hz: f64, te_s: f64, ts_s: f64) -> Complex64 {
 pub fn pc_model(op: &OperatingPoint) -> Model {
     Model::new(
         "PC eq. (16)",
-        vec![Factor::Zoh { t_s: op.ts_s() }, Factor::Zoh { t_s: op.ts_s() }],
+        vec![
+            Factor::Zoh { t_s: op.ts_s() },
+            Factor::Zoh { t_s: op.ts_s() },
+        ],
     )
     .expect("T_s of a validated operating point")
 }
@@ -603,7 +628,8 @@ impl Experiment {
             .checked_mul(spec.edges)
             .ok_or(FreqRespError::Lines(spec.lines))?;
         let sim_rpm = spec.rpm * (1.0 + spec.detune);
-        let op = OperatingPoint::new(r, sim_rpm, spec.ts_s).map_err(FreqRespError::OperatingPoint)?;
+        let op =
+            OperatingPoint::new(r, sim_rpm, spec.ts_s).map_err(FreqRespError::OperatingPoint)?;
         let core = if n3 { Some(core_params(&spec)?) } else { None };
         let model = match spec.estimator {
             Estimator::Pc => FreqModel::Product(pc_model(&op)),
@@ -634,6 +660,29 @@ impl Experiment {
         &self.model
     }
 
+    /// Other models to draw beside [`Experiment::model`], as the paper's figures do: for PC
+    /// eq. (15) (l ≥ 1) and the literature's e^{−sT_s/2} (eq. 27); for ET the literature's
+    /// e^{−sT_e} and ZOH(T_e) (eqs. 28, 29); for n3 and M/T the paper's PC and ET models at
+    /// the same operating point (eqs. 16, 24).
+    pub fn comparison_models(&self) -> Vec<FreqModel> {
+        let op = &self.op;
+        let product = FreqModel::Product;
+        match self.spec.estimator {
+            Estimator::Pc => {
+                let mut v: Vec<FreqModel> = Model::pc_eq15(op).into_iter().map(product).collect();
+                v.push(product(Model::literature_pc_eq27(op)));
+                v
+            }
+            Estimator::Et => vec![
+                product(Model::literature_et1_eq28(op)),
+                product(Model::literature_et2_eq29(op)),
+            ],
+            Estimator::N3 | Estimator::Mt => {
+                vec![product(pc_model(op)), product(Model::et_eq24(op))]
+            }
+        }
+    }
+
     /// The n3 core's parameters (`None` for the other estimators): lines, dt = T_s in
     /// clock cycles, counters wide enough for dt and a timeout of 1000 dt.
     pub fn core_params(&self) -> Option<&Params> {
@@ -650,6 +699,30 @@ impl Experiment {
         self.spec.amplitude * self.mean_rps()
     }
 
+    /// Samples over which the detuning moves the encoder phase by one whole transition
+    /// against the sample grid, 1/(|ε|·l) with l the nominal transitions per sample
+    /// (pulses per dt for n3); infinite for ε = 0. The window N is a whole number of
+    /// these slips (module docs, asynchrony).
+    pub fn samples_per_slip(&self) -> f64 {
+        let l_nominal = self.op.l() / (1.0 + self.spec.detune);
+        1.0 / (self.spec.detune.abs() * l_nominal)
+    }
+
+    /// Least window N in samples: [`BodeSpec::min_samples`], [`BodeSpec::min_periods`]
+    /// periods of `f_hz`, and for n3 at r ≥ 1 pulses per dt also 100·r. n3's updates are
+    /// timed by the pulses: each comes the ceiling's residue of a pulse period (half of
+    /// one on average) later against the sample grid than the one before, so the age of
+    /// the last update at the sample instants sweeps its range once in about 2r samples;
+    /// 100·r samples give 50 sweeps.
+    pub fn min_window(&self, f_hz: f64) -> f64 {
+        let mut n = f64::from(self.spec.min_samples)
+            .max((f64::from(self.spec.min_periods) / (f_hz * self.spec.ts_s)).ceil());
+        if self.spec.estimator == Estimator::N3 && self.op.l() >= 1.0 {
+            n = n.max((100.0 * self.op.l()).ceil());
+        }
+        n
+    }
+
     /// The timing of a measurement at `f_hz` (module docs, 3).
     pub fn plan(&self, f_hz: f64) -> Result<Plan, FreqRespError> {
         let ts = self.spec.ts_s;
@@ -658,9 +731,16 @@ impl Experiment {
             return Err(FreqRespError::Frequency { f_hz, nyquist_hz });
         }
         let too_long = |what: String| FreqRespError::TooLong { f_hz, what };
-        let min_p = f64::from(self.spec.min_periods);
-        let periods = min_p.max((f_hz * f64::from(self.spec.min_samples) * ts).ceil());
-        let mut samples = (periods / (f_hz * ts)).round();
+        // N: at least the least window, and a whole number of slips of the encoder phase
+        // against the sample grid (module docs).
+        let min_n = self.min_window(f_hz);
+        let slip = self.samples_per_slip();
+        let mut samples = if slip.is_finite() {
+            ((min_n / slip).ceil() * slip).round()
+        } else {
+            min_n
+        };
+        let periods = (f_hz * samples * ts).round().max(1.0);
         // f < 1/(2 T_s) keeps N > 2P; rounding can land on N = 2P (f exactly Nyquist).
         if samples <= 2.0 * periods {
             samples = 2.0 * periods + 1.0;
@@ -671,9 +751,7 @@ impl Experiment {
         let settle = (10.0 + 4.0 * te_slow / ts).ceil();
         let total = settle + samples;
         if total > MAX_SAMPLES as f64 {
-            return Err(too_long(format!(
-                "{total} samples (at most {MAX_SAMPLES})"
-            )));
+            return Err(too_long(format!("{total} samples (at most {MAX_SAMPLES})")));
         }
         let duration = total * ts;
         let transitions = duration * self.mean_rps() * f64::from(self.op.transitions_per_rev());
@@ -778,7 +856,7 @@ impl Experiment {
                 let mut c = 0u64;
                 self.for_each_core_input(plan, |inp| {
                     let o = core.step(inp);
-                    if c > 0 && c % dt == 0 {
+                    if c > 0 && c.is_multiple_of(*dt) {
                         y.push(self.n3_rps(&o));
                     }
                     c += 1;
@@ -844,7 +922,11 @@ impl Experiment {
 
     /// Gain and phase from the outputs `y` (rev/s, k = 1 ..= settle + N) of `plan`.
     pub fn analyse(&self, plan: &Plan, y: &[f64]) -> Measurement {
-        assert_eq!(y.len() as u64, plan.total_samples(), "one output per sample");
+        assert_eq!(
+            y.len() as u64,
+            plan.total_samples(),
+            "one output per sample"
+        );
         let (p, n) = (plan.periods, plan.samples);
         let window = &y[plan.settle as usize..];
         let mean = window.iter().sum::<f64>() / n as f64;
@@ -916,7 +998,10 @@ impl Experiment {
         for (i, m) in results.into_iter().flatten() {
             out[i] = Some(m);
         }
-        Ok(out.into_iter().map(|m| m.expect("every plan measured")).collect())
+        Ok(out
+            .into_iter()
+            .map(|m| m.expect("every plan measured"))
+            .collect())
     }
 }
 

@@ -30,7 +30,10 @@ fn known_answers_by_hand() {
     assert_eq!(speeds(f16, 1, 2, false), s(32_768, 21_845, 26_214));
     // Nep = 50, Ndt = 1 (r = 50): n2 = 49; n3 = 2·50·49/99 = 4900/99.
     // 4900·65536 = 321126400 = 99·3243701 + 1 → 3243701.0101 → 3243701.
-    assert_eq!(speeds(f16, 50, 1, false), s(3_276_800, 3_211_264, 3_243_701));
+    assert_eq!(
+        speeds(f16, 50, 1, false),
+        s(3_276_800, 3_211_264, 3_243_701)
+    );
     // Nep = 1, Ndt = 9 (r = 1/10): n1 = 1/9 → 7281.78 → 7282; n2 = 1/10 → 6553.6 → 6554;
     // n3 = 2/19 → 131072/19 = 6898.53 → 6899.
     assert_eq!(speeds(f16, 1, 9, false), s(7_282, 6_554, 6_899));
@@ -213,7 +216,14 @@ fn extremes_fit_the_format() {
         for fb in [0, 8, 16, 24] {
             let f = fmt(n, fb);
             let max = f.counter_max();
-            for (nep, ndt) in [(max, 1), (max, max), (1, max), (max - 1, 1), (2, 1), (max, 2)] {
+            for (nep, ndt) in [
+                (max, 1),
+                (max, max),
+                (1, max),
+                (max - 1, 1),
+                (2, 1),
+                (max, 2),
+            ] {
                 let v = speeds(f, nep, ndt, true);
                 assert!(v.n1 >= -f.max_magnitude() && v.n3 <= 0 && v.n2 <= 0);
             }
@@ -300,10 +310,7 @@ fn a_start_while_busy_is_served_next_with_its_own_values() {
     // First result at edge L; the pending request begins at edge L + 1, result at 2L.
     assert_eq!(
         valids,
-        vec![
-            (l, speeds(f, 10, 1, false)),
-            (2 * l, speeds(f, 1, 3, true))
-        ]
+        vec![(l, speeds(f, 10, 1, false)), (2 * l, speeds(f, 1, 3, true))]
     );
 }
 

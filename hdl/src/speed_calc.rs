@@ -60,8 +60,8 @@
 //!   bits of num wait at the top of a shift register, and each step brings down one bit
 //!   (zeros once the N bits are used), so S steps give ⌊num·2^(F+1)/den⌋ without forming
 //!   num·2^(F+1): R needs P = 2N + 1 bits, and the trial value 2R + b its carry bit, as in
-//!   [`SeqDivider`](crate::SeqDivider). Then magnitude = (q + 1) >> 1 rounds to nearest,
-//!   ties up. The algorithm is [`golden::speed_calc::long_division`].
+//!   [`SeqDivider`](crate::SeqDivider). Then the magnitude (q + 1) >> 1 is the value
+//!   rounded to nearest, ties up. The algorithm is [`golden::speed_calc::long_division`].
 //! * **Multiplier** (shift-add, MSB first, during the first N + 1 steps of the n1 division).
 //!   With X = 2·Nep − 1 (odd, N + 1 bits): Ndt·(2·Nep − 1) = Ndt·X and
 //!   2·Nep·(Nep − 1) = Nep·(X − 1), where X − 1 is X with bit 0 cleared: both accumulate
@@ -70,11 +70,22 @@
 //!   2·Ndt ≤ Nep in P bits), else (Nep, Ndt + 1) and (2·Nep, 2·Ndt + 1).
 //!
 //! Widths never change inside an expression (rust-hdl emits literals 32 bits wide and
-//! casts as masks that Verilator flags), so the N-bit requests are widened to P bits by a
-//! shift-in loop and every constant is a `Constant` of its operand's width. Registers:
-//! 2N + 1 request, 2P + 1 working copy of the request, 4P + ... datapath (R, numerator
-//! shift, denominator, X, two accumulators), S quotient, two S staging, three S outputs, a
-//! 6-bit step counter, state; see the yosys figures in docs/architecture.md.
+//! casts as masks that Verilator flags), so the N-bit request is widened to P bits by a
+//! shift-in loop (wires after synthesis) and every constant is a `Constant` of its
+//! operand's width. The divider's comparison shifted ≥ den is read off the borrow of the
+//! one subtraction it needs (from the top bits of the operands and the difference), and
+//! rounding and sign share one adder: with h = q >> 1 and r = q & 1 the result is
+//! h + r, or −(h + r) = ~h + (1 − r), i.e. (h or ~h) + (r xor `negative`).
+//!
+//! # Resources
+//!
+//! Registers: the request (2N + 2), its working copy (2P + 1, of which the zero top bits
+//! are constant), the divider (3P + S), the multiplier (3P), staging and outputs (5S), a
+//! 6-bit step counter and 8 control bits. For N = 24, F = 16, yosys `synth_ice40` maps
+//! the block to 604 flip-flops, 792 LUT4 and 277 carry cells, and nextpnr places it on an
+//! iCE40 HX8K at about 71 MHz; the critical path is the divider's P-bit trial subtraction
+//! into the partial remainder (the rest of `encspeed_core` reaches 63 to 77 MHz there, see
+//! docs/benchmarks.md).
 
 use rust_hdl::prelude::*;
 
@@ -129,6 +140,10 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     w_nep: DFF<Bits<P>>,
     w_ndt: DFF<Bits<P>>,
     w_neg: DFF<Bit>,
+    /// Nep = 0: all speeds 0.
+    w_nep_zero: DFF<Bit>,
+    /// Ndt = 0: all speeds saturate (unless Nep = 0).
+    w_ndt_zero: DFF<Bit>,
     // Sequencer.
     state: DFF<Bits<STATE_BITS>>,
     phase: DFF<Bits<STATE_BITS>>,
@@ -154,16 +169,28 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     // Combinational.
     req_nep_wide: Signal<Local, Bits<P>>,
     req_ndt_wide: Signal<Local, Bits<P>>,
+    /// Nep ≥ 2·Ndt (n1 ≥ 2): the high-speed forms of n2 and n3.
     high: Signal<Local, Bit>,
     num_sel: Signal<Local, Bits<P>>,
     den_sel: Signal<Local, Bits<P>>,
     shifted: Signal<Local, Bits<P>>,
+    /// shifted − den (P bits, wrapping).
+    diff: Signal<Local, Bits<P>>,
+    shifted_msb: Signal<Local, Bit>,
+    den_msb: Signal<Local, Bit>,
+    /// shifted < den.
+    borrow: Signal<Local, Bit>,
     fits: Signal<Local, Bit>,
     next_rem: Signal<Local, Bits<P>>,
     x_bit: Signal<Local, Bit>,
-    magnitude: Signal<Local, Bits<S>>,
+    /// Quotient >> 1 (or a special value).
+    half: Signal<Local, Bits<S>>,
+    /// Quotient bit 0: the rounding increment.
+    round_bit: Signal<Local, Bit>,
+    addend: Signal<Local, Bits<S>>,
     rounded: Signal<Local, Bits<S>>,
     // Constants, each of the width it is used at.
+    n_zero: Constant<Bits<N>>,
     p_zero: Constant<Bits<P>>,
     p_one: Constant<Bits<P>>,
     /// 2^(P − 1): the partial remainder's carry bit and the numerator bit brought down.
@@ -228,6 +255,8 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             w_nep: Default::default(),
             w_ndt: Default::default(),
             w_neg: Default::default(),
+            w_nep_zero: Default::default(),
+            w_ndt_zero: Default::default(),
             state: Default::default(),
             phase: Default::default(),
             count: Default::default(),
@@ -251,11 +280,18 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             num_sel: Default::default(),
             den_sel: Default::default(),
             shifted: Default::default(),
+            diff: Default::default(),
+            shifted_msb: Default::default(),
+            den_msb: Default::default(),
+            borrow: Default::default(),
             fits: Default::default(),
             next_rem: Default::default(),
             x_bit: Default::default(),
-            magnitude: Default::default(),
+            half: Default::default(),
+            round_bit: Default::default(),
+            addend: Default::default(),
             rounded: Default::default(),
+            n_zero: Constant::new(0.into()),
             p_zero: Constant::new(0.into()),
             p_one: Constant::new(1.into()),
             // P can be 65: build 2^(P−1) bit by bit rather than from a u64.
@@ -288,9 +324,9 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, req_nep, req_ndt, req_neg, pending, w_nep, w_ndt, w_neg, state, phase,
-            count, mul_on, part_rem, num_shift, den, quo, mul_x, acc_num, acc_den, stage_n1, stage_n2,
-            out_n1, out_n2, out_n3, valid_reg
+            self, clock, req_nep, req_ndt, req_neg, pending, w_nep, w_ndt, w_neg, w_nep_zero,
+            w_ndt_zero, state, phase, count, mul_on, part_rem, num_shift, den, quo, mul_x, acc_num,
+            acc_den, stage_n1, stage_n2, out_n1, out_n2, out_n3, valid_reg
         );
         // Widen the request to P bits: shift its bits in at the top, LSB first, then move
         // them down (a cast would be emitted as a mask of another width).
@@ -330,8 +366,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
                 self.den_sel.next = self.acc_den.q.val();
             } else {
                 self.num_sel.next = self.w_nep.q.val() << self.sh_one.val();
-                self.den_sel.next =
-                    (self.w_ndt.q.val() << self.sh_one.val()) | self.p_one.val();
+                self.den_sel.next = (self.w_ndt.q.val() << self.sh_one.val()) | self.p_one.val();
             }
         }
 
@@ -340,37 +375,55 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         if (self.num_shift.q.val() & self.p_msb.val()) != self.p_zero.val() {
             self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.p_one.val();
         }
+        // shifted ≥ den from the borrow of shifted − den, read off the top bits of the
+        // operands and the difference: one subtractor, no separate comparator.
+        self.diff.next = self.shifted.val() - self.den.q.val();
+        self.shifted_msb.next = (self.shifted.val() & self.p_msb.val()) != self.p_zero.val();
+        self.den_msb.next = (self.den.q.val() & self.p_msb.val()) != self.p_zero.val();
+        self.borrow.next = ((!self.shifted_msb.val()) & self.den_msb.val())
+            | ((!(self.shifted_msb.val() ^ self.den_msb.val()))
+                & ((self.diff.val() & self.p_msb.val()) != self.p_zero.val()));
         self.fits.next = ((self.part_rem.q.val() & self.p_msb.val()) != self.p_zero.val())
-            | (self.shifted.val() >= self.den.q.val());
+            | (!self.borrow.val());
         self.next_rem.next = self.shifted.val();
         if self.fits.val() {
-            self.next_rem.next = self.shifted.val() - self.den.q.val();
+            self.next_rem.next = self.diff.val();
         }
         self.x_bit.next = (self.mul_x.q.val() & self.p_x_msb.val()) != self.p_zero.val();
 
-        // Round the last quotient (q + 1) >> 1, apply the special cases, then the sign.
-        self.magnitude.next = (self.quo.q.val() + self.s_one.val()) >> self.sh_one.val();
-        if self.w_ndt.q.val() == self.p_zero.val() {
-            self.magnitude.next = self.s_max.val();
+        // Round and sign with one adder. With q the last quotient, h = q >> 1 and r = q & 1,
+        // the magnitude is h + r, and its negation ~(h + r) + 1 = ~h + (1 − r): so the
+        // result is (h, or ~h if negative) + (r xor negative). The special cases replace
+        // h and r (Ndt = 0: h = 2^(N+F) − 1, r = 0; Nep = 0: h = 0, r = 0).
+        self.half.next = self.quo.q.val() >> self.sh_one.val();
+        self.round_bit.next = (self.quo.q.val() & self.s_one.val()) != self.s_zero.val();
+        if self.w_ndt_zero.q.val() {
+            self.half.next = self.s_max.val();
+            self.round_bit.next = false;
         }
-        if self.w_nep.q.val() == self.p_zero.val() {
-            self.magnitude.next = self.s_zero.val();
+        if self.w_nep_zero.q.val() {
+            self.half.next = self.s_zero.val();
+            self.round_bit.next = false;
         }
-        self.rounded.next = self.magnitude.val();
+        self.addend.next = self.half.val();
         if self.w_neg.q.val() {
-            self.rounded.next = self.s_zero.val() - self.magnitude.val();
+            self.addend.next = !self.half.val();
+        }
+        self.rounded.next = self.addend.val();
+        if self.round_bit.val() ^ self.w_neg.q.val() {
+            self.rounded.next = self.addend.val() + self.s_one.val();
         }
 
         self.valid_reg.d.next = false;
-        if self.state.q.val() == self.st_idle.val() {
-            if self.pending.q.val() {
-                self.w_nep.d.next = self.req_nep_wide.val();
-                self.w_ndt.d.next = self.req_ndt_wide.val();
-                self.w_neg.d.next = self.req_neg.q.val();
-                self.pending.d.next = false;
-                self.phase.d.next = self.ph_one.val();
-                self.state.d.next = self.st_setup.val();
-            }
+        if (self.state.q.val() == self.st_idle.val()) & self.pending.q.val() {
+            self.w_nep.d.next = self.req_nep_wide.val();
+            self.w_ndt.d.next = self.req_ndt_wide.val();
+            self.w_neg.d.next = self.req_neg.q.val();
+            self.w_nep_zero.d.next = self.req_nep.q.val() == self.n_zero.val();
+            self.w_ndt_zero.d.next = self.req_ndt.q.val() == self.n_zero.val();
+            self.pending.d.next = false;
+            self.phase.d.next = self.ph_one.val();
+            self.state.d.next = self.st_setup.val();
         }
         if self.state.q.val() == self.st_setup.val() {
             self.part_rem.d.next = self.num_sel.val() >> self.sh_n.val();

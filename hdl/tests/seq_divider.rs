@@ -189,18 +189,9 @@ const BENCH: &str = r#"module seq_divider_tb;
 endmodule
 "#;
 
-/// splitmix64: a fixed, reproducible stream of random operands for the Icarus run.
-struct SplitMix(u64);
+use common::SplitMix;
 
 impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
     fn operand(&mut self) -> u64 {
         match self.next() % 10 {
             0 => 0,

@@ -5,6 +5,7 @@
 //! ([`hdl::build_core`]) and the emitted Verilog in Verilator ([`verilator`]).
 
 pub mod cosim;
+pub mod freqresp;
 pub mod icarus;
 pub mod scenarios;
 pub mod stimulus;

@@ -1,5 +1,8 @@
 //! Shared by the block tests: where build products go, and Icarus runs.
 
+// Each test binary includes this module and uses a subset of it.
+#![allow(dead_code)]
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -33,4 +36,19 @@ pub fn icarus_run(dir: &Path, extra: &[String], sources: &[String]) -> String {
         .output()
         .expect("cannot run vvp");
     String::from_utf8_lossy(&run.stdout).into_owned()
+}
+
+/// splitmix64: a fixed, reproducible stream of random numbers for the Icarus runs (each
+/// test adds its own operand shapes on top of `next`).
+pub struct SplitMix(pub u64);
+
+impl SplitMix {
+    /// The next 64 random bits.
+    pub fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
 }
