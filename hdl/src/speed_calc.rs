@@ -84,8 +84,8 @@
 //! 6-bit step counter and 8 control bits. For N = 24, F = 16, yosys `synth_ice40` maps
 //! the block to 604 flip-flops, 792 LUT4 and 277 carry cells, and nextpnr places it on an
 //! iCE40 HX8K at about 71 MHz; the critical path is the divider's P-bit trial subtraction
-//! into the partial remainder (the rest of `encspeed_core` reaches 63 to 77 MHz there, see
-//! docs/benchmarks.md).
+//! into the partial remainder (the 24-bit `encspeed_core` reaches 76 to 85 MHz there,
+//! depending on placement, see docs/benchmarks.md).
 
 use rust_hdl::prelude::*;
 
