@@ -13,11 +13,14 @@
 pub mod bittrue;
 pub mod divider;
 pub mod eccentric;
+pub mod et_timer;
 pub mod freqresp;
 pub mod frontend;
 pub mod ideal;
 pub mod mt;
+pub mod mt_counter;
 pub mod params;
+pub mod pc_counter;
 pub mod plant;
 pub mod rairan;
 pub mod smallsignal;

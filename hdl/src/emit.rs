@@ -139,6 +139,14 @@ pub fn named_verilog(uut: &dyn Block, module_name: &str) -> String {
     defines.defines()
 }
 
+/// The Verilog of a block built by `Default` (the standalone blocks), connected and checked,
+/// top module named `module_name`.
+pub fn default_block_verilog<B: Block + Default>(module_name: &str) -> String {
+    let mut uut = B::default();
+    uut.connect_all();
+    named_verilog(&uut, module_name)
+}
+
 /// The `encspeed` command line that regenerates the files for `p` (every parameter given
 /// explicitly, so the header stays true whatever the defaults become).
 pub fn regenerate_command(p: &Params) -> String {

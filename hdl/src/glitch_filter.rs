@@ -106,9 +106,7 @@ impl<const F: usize, const G: usize> Logic for GlitchFilter<F, G> {
 
 /// The Verilog of a [`GlitchFilter`], top module named `module_name`.
 pub fn glitch_filter_verilog<const F: usize, const G: usize>(module_name: &str) -> String {
-    let mut uut = GlitchFilter::<F, G>::default();
-    uut.connect_all();
-    crate::emit::named_verilog(&uut, module_name)
+    crate::emit::default_block_verilog::<GlitchFilter<F, G>>(module_name)
 }
 
 #[cfg(test)]

@@ -19,13 +19,19 @@
 //! | [`PositionCounter`] | `position_counter.rs` | position modulo counts per revolution, Z reset/latch, revolution check |
 //! | [`SeqDivider`] | `seq_divider.rs` | unsigned radix-2 divider, one quotient bit per clock |
 //! | [`SpeedCalc`] | `speed_calc.rs` | Rairán n1, n2, n3 as signed fixed point (sequential divider and multiplier) |
+//! | [`PcCounter`] | `pc_counter.rs` | fixed-time baseline: net signed steps per window of `cfg_dt` cycles (free-running), saturating |
+//! | [`EtTimer`] | `et_timer.rs` | fixed-space baseline: cycles between steps of one direction, saturating, `stalled` |
+//! | [`MtCounter`] | `mt_counter.rs` | M/T: per window, steps m and cycles T between the anchor and the last step |
 //!
 //! [`build_core`] turns validated [`Params`](golden::params::Params) into a core of the right
 //! counter width behind the [`CoreSim`] trait (rust-hdl widths are const generics).
 
 pub mod core;
 pub mod emit;
+pub mod et_timer;
 pub mod glitch_filter;
+pub mod mt_counter;
+pub mod pc_counter;
 pub mod position_counter;
 pub mod quadrature_decoder;
 pub mod rising_edge;
@@ -41,7 +47,10 @@ pub mod two_flop_sync;
 
 pub use crate::core::EncspeedCore;
 pub use emit::{emit_core, EmitInfo};
+pub use et_timer::{et_timer_verilog, EtTimer};
 pub use glitch_filter::{glitch_filter_verilog, GlitchFilter};
+pub use mt_counter::{mt_counter_verilog, MtCounter};
+pub use pc_counter::{pc_counter_verilog, PcCounter};
 pub use position_counter::{position_counter_verilog, PositionCounter};
 pub use quadrature_decoder::{quadrature_decoder_verilog, QuadratureDecoder};
 pub use rising_edge::RisingEdge;

@@ -283,9 +283,7 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
 
 /// The Verilog of a [`PositionCounter`], top module named `module_name`.
 pub fn position_counter_verilog<const C: usize, const G: usize>(module_name: &str) -> String {
-    let mut uut = PositionCounter::<C, G>::default();
-    uut.connect_all();
-    crate::emit::named_verilog(&uut, module_name)
+    crate::emit::default_block_verilog::<PositionCounter<C, G>>(module_name)
 }
 
 #[cfg(test)]

@@ -183,9 +183,7 @@ impl<const G: usize> Logic for QuadratureDecoder<G> {
 
 /// The Verilog of a [`QuadratureDecoder`], top module named `module_name`.
 pub fn quadrature_decoder_verilog<const G: usize>(module_name: &str) -> String {
-    let mut uut = QuadratureDecoder::<G>::default();
-    uut.connect_all();
-    crate::emit::named_verilog(&uut, module_name)
+    crate::emit::default_block_verilog::<QuadratureDecoder<G>>(module_name)
 }
 
 #[cfg(test)]

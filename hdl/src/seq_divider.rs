@@ -208,9 +208,7 @@ impl<const W: usize> Logic for SeqDivider<W> {
 
 /// The Verilog of a `SeqDivider<W>` with its top module named `module_name`.
 pub fn seq_divider_verilog<const W: usize>(module_name: &str) -> String {
-    let mut uut = SeqDivider::<W>::default();
-    uut.connect_all();
-    crate::emit::named_verilog(&uut, module_name)
+    crate::emit::default_block_verilog::<SeqDivider<W>>(module_name)
 }
 
 #[cfg(test)]

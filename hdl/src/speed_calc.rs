@@ -511,9 +511,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
 pub fn speed_calc_verilog<const N: usize, const F: usize, const P: usize, const S: usize>(
     module_name: &str,
 ) -> String {
-    let mut uut = SpeedCalc::<N, F, P, S>::default();
-    uut.connect_all();
-    crate::emit::named_verilog(&uut, module_name)
+    crate::emit::default_block_verilog::<SpeedCalc<N, F, P, S>>(module_name)
 }
 
 #[cfg(test)]
