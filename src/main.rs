@@ -72,7 +72,9 @@ enum Cmd {
         #[arg(long, default_value = "ct256")]
         package: String,
     },
-    /// Frequency response of a speed estimator, the paper's VCO experiment in simulation:
+    /// Measured and model gain/phase of a speed estimator (CSV, SVG).
+    ///
+    /// The paper's VCO experiment in simulation:
     /// n(t) = rpm·(1 + amplitude·sin 2πft) drives the plant and the golden estimator; the
     /// single DFT bin at f of the held output over the input gives gain and phase, beside
     /// the small-signal model. CSV on stdout (and --csv), a summary on stderr, and an SVG
