@@ -12,6 +12,7 @@
 
 pub mod bittrue;
 pub mod divider;
+pub mod ecc_corrector;
 pub mod eccentric;
 pub mod et_timer;
 pub mod freqresp;
@@ -23,5 +24,6 @@ pub mod params;
 pub mod pc_counter;
 pub mod plant;
 pub mod rairan;
+pub mod sine_rom;
 pub mod smallsignal;
 pub mod speed_calc;

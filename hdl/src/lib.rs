@@ -22,11 +22,16 @@
 //! | [`PcCounter`] | `pc_counter.rs` | fixed-time baseline: net signed steps per window of `cfg_dt` cycles (free-running), saturating |
 //! | [`EtTimer`] | `et_timer.rs` | fixed-space baseline: cycles between steps of one direction, saturating, `stalled` |
 //! | [`MtCounter`] | `mt_counter.rs` | M/T: per window, steps m and cycles T between the anchor and the last step |
+//! | [`SineRom`] | `sine_rom.rs` | sine table of K entries at (m + m0) mod K, registered read |
+//! | [`EccArith`] | `ecc_arith.rs` | the corrector's multiply-and-round stage (custom Verilog) |
+//! | [`EccCorrector`] | `ecc_corrector.rs` | first-harmonic eccentricity correction of a line count, N_c in Q25.24 |
 //!
 //! [`build_core`] turns validated [`Params`](golden::params::Params) into a core of the right
 //! counter width behind the [`CoreSim`] trait (rust-hdl widths are const generics).
 
 pub mod core;
+pub mod ecc_arith;
+pub mod ecc_corrector;
 pub mod emit;
 pub mod et_timer;
 pub mod glitch_filter;
@@ -37,6 +42,7 @@ pub mod quadrature_decoder;
 pub mod rising_edge;
 pub mod seq_divider;
 pub mod sim;
+pub mod sine_rom;
 pub mod speed_calc;
 pub mod startup;
 pub mod sync_estimator;
@@ -46,6 +52,8 @@ pub mod timebase;
 pub mod two_flop_sync;
 
 pub use crate::core::EncspeedCore;
+pub use ecc_arith::EccArith;
+pub use ecc_corrector::{ecc_corrector_verilog, EccCorrector};
 pub use emit::{emit_core, EmitInfo};
 pub use et_timer::{et_timer_verilog, EtTimer};
 pub use glitch_filter::{glitch_filter_verilog, GlitchFilter};
@@ -56,6 +64,7 @@ pub use quadrature_decoder::{quadrature_decoder_verilog, QuadratureDecoder};
 pub use rising_edge::RisingEdge;
 pub use seq_divider::{seq_divider_verilog, SeqDivider};
 pub use sim::{build_core, CoreSim};
+pub use sine_rom::{sine_rom_verilog, SineRom};
 pub use speed_calc::{speed_calc_verilog, SpeedCalc};
 pub use startup::Startup;
 pub use sync_estimator::SyncEstimator;
