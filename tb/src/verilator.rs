@@ -65,9 +65,12 @@ impl Verilated {
         if exe.exists() {
             return Ok(Verilated { exe });
         }
-        // Build in a private directory and rename it into place, so that tests running in
-        // parallel never see a half-built harness.
-        let tmp = root.join(format!("{hash:016x}.tmp{}", std::process::id()));
+        // Build in a directory private to this process and this call (tests run in
+        // parallel threads of one process) and rename it into place, so that no test ever
+        // sees, or writes into, a half-built harness.
+        static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+        let build = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let tmp = root.join(format!("{hash:016x}.tmp{}-{build}", std::process::id()));
         let _ = std::fs::remove_dir_all(&tmp);
         let (v, w) = stage(&tmp, verilog).map_err(|e| e.to_string())?;
         let h = tmp.join("harness.cpp");
