@@ -18,6 +18,7 @@ pub mod et_timer;
 pub mod freqresp;
 pub mod frontend;
 pub mod ideal;
+pub mod ident_gatherer;
 pub mod mt;
 pub mod mt_counter;
 pub mod params;

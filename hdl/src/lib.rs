@@ -25,6 +25,8 @@
 //! | [`SineRom`] | `sine_rom.rs` | sine table of K entries at (m + m0) mod K, registered read |
 //! | [`EccArith`] | `ecc_arith.rs` | the corrector's multiply-and-round stage (custom Verilog) |
 //! | [`EccCorrector`] | `ecc_corrector.rs` | first-harmonic eccentricity correction of a line count, N_c in Q25.24 |
+//! | [`IdentGatherer`] | `ident_gatherer.rs` | between two Z pulses: N, T_min/T_max and positions, Σ T, Σ T·sin, Σ T·cos; sticky `done` |
+//! | [`IdentMac`] | `ident_mac.rs` | the gatherer's two T × 24-bit multiply-adds (custom Verilog) |
 //!
 //! [`build_core`] turns validated [`Params`](golden::params::Params) into a core of the right
 //! counter width behind the [`CoreSim`] trait (rust-hdl widths are const generics).
@@ -35,6 +37,8 @@ pub mod ecc_corrector;
 pub mod emit;
 pub mod et_timer;
 pub mod glitch_filter;
+pub mod ident_gatherer;
+pub mod ident_mac;
 pub mod mt_counter;
 pub mod pc_counter;
 pub mod position_counter;
@@ -57,6 +61,8 @@ pub use ecc_corrector::{ecc_corrector_verilog, EccCorrector};
 pub use emit::{emit_core, EmitInfo};
 pub use et_timer::{et_timer_verilog, EtTimer};
 pub use glitch_filter::{glitch_filter_verilog, GlitchFilter};
+pub use ident_gatherer::{ident_gatherer_verilog, IdentGatherer};
+pub use ident_mac::IdentMac;
 pub use mt_counter::{mt_counter_verilog, MtCounter};
 pub use pc_counter::{pc_counter_verilog, PcCounter};
 pub use position_counter::{position_counter_verilog, PositionCounter};
