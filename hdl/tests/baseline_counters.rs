@@ -73,19 +73,12 @@ fn stimulus(seed: u64, bits: u32, len: usize) -> Vec<Cycle> {
     out
 }
 
-fn edge<T: Block>(uut: &mut T, clock: impl Fn(&mut T, bool)) {
-    clock(uut, false);
-    assert!(simulate(uut, 100), "design did not settle");
-    clock(uut, true);
-    assert!(simulate(uut, 100), "design did not settle");
-}
-
 fn pc_step<const N: usize>(uut: &mut PcCounter<N>, c: &Cycle) -> PcOutputs {
     uut.reset.next = c.reset;
     uut.step.next = c.step;
     uut.forward.next = c.forward;
     uut.cfg_dt.next = c.cfg_dt.into();
-    edge(uut, |u, v| u.clock.next = Clock { clk: v });
+    common::edge(uut, |u, v| u.clock.next = Clock { clk: v });
     let raw = uut.count.val().to_u64();
     // Sign-extend the N-bit two's complement count.
     let count = ((raw << (64 - N)) as i64) >> (64 - N);
@@ -100,7 +93,7 @@ fn et_step<const N: usize>(uut: &mut EtTimer<N>, c: &Cycle) -> EtOutputs {
     uut.reset.next = c.reset;
     uut.step.next = c.step;
     uut.forward.next = c.forward;
-    edge(uut, |u, v| u.clock.next = Clock { clk: v });
+    common::edge(uut, |u, v| u.clock.next = Clock { clk: v });
     EtOutputs {
         period: uut.period.val().to_u64(),
         negative: uut.negative.val(),
@@ -114,7 +107,7 @@ fn mt_step<const N: usize>(uut: &mut MtCounter<N>, c: &Cycle) -> MtOutputs {
     uut.step.next = c.step;
     uut.forward.next = c.forward;
     uut.cfg_dt.next = c.cfg_dt.into();
-    edge(uut, |u, v| u.clock.next = Clock { clk: v });
+    common::edge(uut, |u, v| u.clock.next = Clock { clk: v });
     MtOutputs {
         m: uut.m.val().to_u64(),
         t: uut.t.val().to_u64(),
@@ -217,110 +210,6 @@ proptest! {
     }
 }
 
-/// A self-checking replay bench for `module` with the given input and output ports (name,
-/// width): each line of `vectors.txt` holds the inputs and then the outputs expected after
-/// the edge, in hex; ends with one `RESULT` line.
-fn bench(module: &str, inputs: &[(&str, usize)], outputs: &[(&str, usize)]) -> String {
-    let decl = |(n, w): &(&str, usize), kind: &str, prefix: &str| {
-        if *w == 1 {
-            format!("    {kind} {prefix}{n};\n")
-        } else {
-            format!("    {kind} [{}:0] {prefix}{n};\n", w - 1)
-        }
-    };
-    let mut v = format!("module {module}_tb;\n    reg clock = 1'b0;\n");
-    for p in inputs {
-        v += &decl(p, "reg", "");
-        v += &decl(p, "reg", "v_");
-    }
-    for p in outputs {
-        v += &decl(p, "wire", "");
-        v += &decl(p, "reg", "e_");
-    }
-    v += "    integer fd, n, cycles, errors, strobes;\n";
-    let ports: Vec<String> = std::iter::once("clock".to_string())
-        .chain(inputs.iter().chain(outputs).map(|p| p.0.to_string()))
-        .map(|n| format!(".{n}({n})"))
-        .collect();
-    v += &format!("    {module} uut({});\n", ports.join(", "));
-    let fields = inputs.len() + outputs.len();
-    let fmt = vec!["%h"; fields].join(" ");
-    let args: Vec<String> = inputs
-        .iter()
-        .map(|p| format!("v_{}", p.0))
-        .chain(outputs.iter().map(|p| format!("e_{}", p.0)))
-        .collect();
-    let scan = format!("n = $fscanf(fd, \"{fmt}\\n\", {});", args.join(", "));
-    let apply: String = inputs
-        .iter()
-        .map(|p| format!(" {0} = v_{0};", p.0))
-        .collect();
-    let differ: Vec<String> = outputs
-        .iter()
-        .map(|p| format!("{0} !== e_{0}", p.0))
-        .collect();
-    v += &format!(
-        r#"    initial begin
-        cycles = 0; errors = 0; strobes = 0;
-        fd = $fopen("vectors.txt", "r");
-        if (fd == 0) begin
-            $display("RESULT FAIL cannot open vectors.txt");
-            $finish;
-        end
-        {scan}
-        while (n == {fields}) begin
-           {apply}
-            #5 clock = 1'b1;
-            #1;
-            if ({differ}) begin
-                if (errors < 10) $display("MISMATCH cycle %0d", cycles);
-                errors = errors + 1;
-            end
-            if (strobe === 1'b1) strobes = strobes + 1;
-            cycles = cycles + 1;
-            #4 clock = 1'b0;
-            {scan}
-        end
-        $fclose(fd);
-        if (errors == 0 && cycles > 0)
-            $display("RESULT PASS %0d cycles %0d strobes", cycles, strobes);
-        else
-            $display("RESULT FAIL %0d cycles %0d mismatches", cycles, errors);
-        $finish;
-    end
-endmodule
-"#,
-        differ = differ.join(" || ")
-    );
-    v
-}
-
-/// Writes the Verilog, the bench and the vectors under `target/baseline_counters/<dir>`,
-/// runs Icarus and asserts the PASS line (all cycles, the expected number of strobes).
-fn icarus(dir: &str, module: &str, verilog: String, tb: String, vectors: &str, strobes: usize) {
-    let dir = common::target_dir().join("baseline_counters").join(dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(dir.join(format!("{module}.v")), verilog).unwrap();
-    std::fs::write(dir.join(format!("{module}_tb.v")), tb).unwrap();
-    std::fs::write(dir.join("vectors.txt"), vectors).unwrap();
-    let text = common::icarus_run(
-        &dir,
-        &[],
-        &[format!("{module}_tb.v"), format!("{module}.v")],
-    );
-    let result = text
-        .lines()
-        .find(|l| l.starts_with("RESULT"))
-        .unwrap_or_else(|| panic!("no RESULT line from the bench:\n{text}"));
-    let cycles = vectors.lines().count();
-    assert!(strobes > 50, "too few results in the stimulus");
-    assert_eq!(
-        result,
-        format!("RESULT PASS {cycles} cycles {strobes} strobes"),
-        "\n{text}"
-    );
-}
-
 /// Many stimulus cases back to back (a reset between them).
 fn long_stimulus(seed: u64, bits: u32, cases: u64) -> Vec<Cycle> {
     let mut out = vec![];
@@ -354,13 +243,23 @@ fn pc_icarus<const N: usize>(seed: u64) {
     if N == 8 {
         assert!(saturated > 0, "the stimulus must saturate the count");
     }
-    let tb = bench(
+    let tb = common::replay_bench(
         "pc_counter",
         &[("reset", 1), ("step", 1), ("forward", 1), ("cfg_dt", N)],
         &[("count", N), ("saturated", 1), ("strobe", 1)],
+        "strobe",
     );
     let v = pc_counter_verilog::<N>("pc_counter");
-    icarus(&format!("pc_n{N}"), "pc_counter", v, tb, &vectors, strobes);
+    assert!(strobes > 50, "too few results in the stimulus");
+    common::replay(
+        "baseline_counters",
+        &format!("pc_n{N}"),
+        "pc_counter",
+        &v,
+        &tb,
+        &vectors,
+        strobes,
+    );
 }
 
 fn et_icarus<const N: usize>(seed: u64) {
@@ -384,7 +283,7 @@ fn et_icarus<const N: usize>(seed: u64) {
     if N == 8 {
         assert!(stalls > 0, "the stimulus must stall");
     }
-    let tb = bench(
+    let tb = common::replay_bench(
         "et_timer",
         &[("reset", 1), ("step", 1), ("forward", 1)],
         &[
@@ -393,9 +292,19 @@ fn et_icarus<const N: usize>(seed: u64) {
             ("strobe", 1),
             ("stalled", 1),
         ],
+        "strobe",
     );
     let v = et_timer_verilog::<N>("et_timer");
-    icarus(&format!("et_n{N}"), "et_timer", v, tb, &vectors, strobes);
+    assert!(strobes > 50, "too few results in the stimulus");
+    common::replay(
+        "baseline_counters",
+        &format!("et_n{N}"),
+        "et_timer",
+        &v,
+        &tb,
+        &vectors,
+        strobes,
+    );
 }
 
 fn mt_icarus<const N: usize>(seed: u64) {
@@ -419,7 +328,7 @@ fn mt_icarus<const N: usize>(seed: u64) {
         );
     }
     assert!(negatives > 0, "the stimulus must cover reverse");
-    let tb = bench(
+    let tb = common::replay_bench(
         "mt_counter",
         &[("reset", 1), ("step", 1), ("forward", 1), ("cfg_dt", N)],
         &[
@@ -429,9 +338,19 @@ fn mt_icarus<const N: usize>(seed: u64) {
             ("strobe", 1),
             ("stalled", 1),
         ],
+        "strobe",
     );
     let v = mt_counter_verilog::<N>("mt_counter");
-    icarus(&format!("mt_n{N}"), "mt_counter", v, tb, &vectors, strobes);
+    assert!(strobes > 50, "too few results in the stimulus");
+    common::replay(
+        "baseline_counters",
+        &format!("mt_n{N}"),
+        "mt_counter",
+        &v,
+        &tb,
+        &vectors,
+        strobes,
+    );
 }
 
 #[test]

@@ -154,83 +154,6 @@ fn stimulus_reaches_done_and_overflow() {
     assert!(d > 500, "done {d}");
 }
 
-/// A self-checking replay bench (as in `sine_rom_ecc.rs`): each line of `vectors.txt`
-/// holds the inputs and then the outputs expected after the edge, in hex.
-fn bench(module: &str, inputs: &[(&str, usize)], outputs: &[(&str, usize)]) -> String {
-    let decl = |(n, w): &(&str, usize), kind: &str, prefix: &str| {
-        if *w == 1 {
-            format!("    {kind} {prefix}{n};\n")
-        } else {
-            format!("    {kind} [{}:0] {prefix}{n};\n", w - 1)
-        }
-    };
-    let mut v = format!("module {module}_tb;\n    reg clock = 1'b0;\n");
-    for p in inputs {
-        v += &decl(p, "reg", "");
-        v += &decl(p, "reg", "v_");
-    }
-    for p in outputs {
-        v += &decl(p, "wire", "");
-        v += &decl(p, "reg", "e_");
-    }
-    v += "    integer fd, n, cycles, errors, counted;\n";
-    let ports: Vec<String> = std::iter::once("clock".to_string())
-        .chain(inputs.iter().chain(outputs).map(|p| p.0.to_string()))
-        .map(|n| format!(".{n}({n})"))
-        .collect();
-    v += &format!("    {module} uut({});\n", ports.join(", "));
-    let fields = inputs.len() + outputs.len();
-    let fmt = vec!["%h"; fields].join(" ");
-    let args: Vec<String> = inputs
-        .iter()
-        .map(|p| format!("v_{}", p.0))
-        .chain(outputs.iter().map(|p| format!("e_{}", p.0)))
-        .collect();
-    let scan = format!("n = $fscanf(fd, \"{fmt}\\n\", {});", args.join(", "));
-    let apply: String = inputs
-        .iter()
-        .map(|p| format!(" {0} = v_{0};", p.0))
-        .collect();
-    let differ: Vec<String> = outputs
-        .iter()
-        .map(|p| format!("{0} !== e_{0}", p.0))
-        .collect();
-    v += &format!(
-        r#"    initial begin
-        cycles = 0; errors = 0; counted = 0;
-        fd = $fopen("vectors.txt", "r");
-        if (fd == 0) begin
-            $display("RESULT FAIL cannot open vectors.txt");
-            $finish;
-        end
-        {scan}
-        while (n == {fields}) begin
-           {apply}
-            #5 clock = 1'b1;
-            #1;
-            if ({differ}) begin
-                if (errors < 10) $display("MISMATCH cycle %0d", cycles);
-                errors = errors + 1;
-            end
-            if (done !== 1'b0) counted = counted + 1;
-            cycles = cycles + 1;
-            #4 clock = 1'b0;
-            {scan}
-        end
-        $fclose(fd);
-        if (errors == 0 && cycles > 0)
-            $display("RESULT PASS %0d cycles %0d counted", cycles, counted);
-        else
-            $display("RESULT FAIL %0d cycles %0d mismatches", cycles, errors);
-        $finish;
-    end
-endmodule
-"#,
-        differ = differ.join(" || ")
-    );
-    v
-}
-
 fn icarus<const A: usize, const T: usize, const W: usize>(lines: u32, seed: u64) {
     assert_eq!(W as u32, sum_bits(A as u32, T as u32));
     let mut model = Model::new(lines, A as u32, T as u32);
@@ -270,7 +193,7 @@ fn icarus<const A: usize, const T: usize, const W: usize>(lines: u32, seed: u64)
         );
     }
     assert!(dones > 200, "too few results in the stimulus");
-    let tb = bench(
+    let tb = common::replay_bench(
         "ident_gatherer",
         &[
             ("reset", 1),
@@ -292,31 +215,17 @@ fn icarus<const A: usize, const T: usize, const W: usize>(lines: u32, seed: u64)
             ("sum_sin", W),
             ("sum_cos", W),
         ],
+        "done",
     );
     let v = ident_gatherer_verilog::<A, T, W>(lines, "ident_gatherer");
-    let dir = common::target_dir()
-        .join("ident_gatherer")
-        .join(format!("a{A}_t{T}_k{lines}"));
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(dir.join("ident_gatherer.v"), v).unwrap();
-    std::fs::write(dir.join("ident_gatherer_tb.v"), tb).unwrap();
-    std::fs::write(dir.join("vectors.txt"), &vectors).unwrap();
-    let text = common::icarus_run(
-        &dir,
-        &[],
-        &["ident_gatherer_tb.v".into(), "ident_gatherer.v".into()],
-    );
-    let result = text
-        .lines()
-        .find(|l| l.starts_with("RESULT"))
-        .unwrap_or_else(|| panic!("no RESULT line from the bench:\n{text}"));
-    assert_eq!(
-        result,
-        format!(
-            "RESULT PASS {} cycles {dones} counted",
-            vectors.lines().count()
-        ),
-        "\n{text}"
+    common::replay(
+        "ident_gatherer",
+        &format!("a{A}_t{T}_k{lines}"),
+        "ident_gatherer",
+        &v,
+        &tb,
+        &vectors,
+        dones,
     );
 }
 

@@ -17,13 +17,6 @@ use hdl::{ecc_corrector_verilog, sine_rom_verilog, EccCorrector, SineRom};
 use proptest::prelude::*;
 use rust_hdl::prelude::*;
 
-fn edge<T: Block>(uut: &mut T, clock: impl Fn(&mut T, bool)) {
-    clock(uut, false);
-    assert!(simulate(uut, 100), "design did not settle");
-    clock(uut, true);
-    assert!(simulate(uut, 100), "design did not settle");
-}
-
 fn sext(raw: u64, bits: u32) -> i64 {
     ((raw << (64 - bits)) as i64) >> (64 - bits)
 }
@@ -76,7 +69,7 @@ fn stimulus(seed: u64, lines: u32, a: u32, len: usize) -> Vec<EccInputs> {
 fn rom_step<const A: usize, const D: usize>(uut: &mut SineRom<A, D>, c: &EccInputs) -> i64 {
     uut.m.next = c.m_a.into();
     uut.m0.next = c.m0.into();
-    edge(uut, |u, v| u.clock.next = Clock { clk: v });
+    common::edge(uut, |u, v| u.clock.next = Clock { clk: v });
     sext(uut.data.val().to_u64(), D as u32)
 }
 
@@ -88,7 +81,7 @@ fn ecc_step<const A: usize>(uut: &mut EccCorrector<A>, c: &EccInputs) -> EccOutp
     uut.m_b.next = c.m_b.into();
     uut.m0.next = c.m0.into();
     uut.e_coef.next = ((c.e_coef as u64) & 0xffff).into();
-    edge(uut, |u, v| u.clock.next = Clock { clk: v });
+    common::edge(uut, |u, v| u.clock.next = Clock { clk: v });
     EccOutputs {
         n_c: sext(uut.n_c.val().to_u64(), NC_BITS),
         valid: uut.valid.val(),
@@ -174,114 +167,6 @@ proptest! {
     }
 }
 
-/// A self-checking replay bench for `module` with the given input and output ports (name,
-/// width): each line of `vectors.txt` holds the inputs and then the outputs expected after
-/// the edge, in hex; counts the cycles with `count_port` high; ends with one `RESULT` line.
-fn bench(
-    module: &str,
-    inputs: &[(&str, usize)],
-    outputs: &[(&str, usize)],
-    count_port: &str,
-) -> String {
-    let decl = |(n, w): &(&str, usize), kind: &str, prefix: &str| {
-        if *w == 1 {
-            format!("    {kind} {prefix}{n};\n")
-        } else {
-            format!("    {kind} [{}:0] {prefix}{n};\n", w - 1)
-        }
-    };
-    let mut v = format!("module {module}_tb;\n    reg clock = 1'b0;\n");
-    for p in inputs {
-        v += &decl(p, "reg", "");
-        v += &decl(p, "reg", "v_");
-    }
-    for p in outputs {
-        v += &decl(p, "wire", "");
-        v += &decl(p, "reg", "e_");
-    }
-    v += "    integer fd, n, cycles, errors, counted;\n";
-    let ports: Vec<String> = std::iter::once("clock".to_string())
-        .chain(inputs.iter().chain(outputs).map(|p| p.0.to_string()))
-        .map(|n| format!(".{n}({n})"))
-        .collect();
-    v += &format!("    {module} uut({});\n", ports.join(", "));
-    let fields = inputs.len() + outputs.len();
-    let fmt = vec!["%h"; fields].join(" ");
-    let args: Vec<String> = inputs
-        .iter()
-        .map(|p| format!("v_{}", p.0))
-        .chain(outputs.iter().map(|p| format!("e_{}", p.0)))
-        .collect();
-    let scan = format!("n = $fscanf(fd, \"{fmt}\\n\", {});", args.join(", "));
-    let apply: String = inputs
-        .iter()
-        .map(|p| format!(" {0} = v_{0};", p.0))
-        .collect();
-    let differ: Vec<String> = outputs
-        .iter()
-        .map(|p| format!("{0} !== e_{0}", p.0))
-        .collect();
-    v += &format!(
-        r#"    initial begin
-        cycles = 0; errors = 0; counted = 0;
-        fd = $fopen("vectors.txt", "r");
-        if (fd == 0) begin
-            $display("RESULT FAIL cannot open vectors.txt");
-            $finish;
-        end
-        {scan}
-        while (n == {fields}) begin
-           {apply}
-            #5 clock = 1'b1;
-            #1;
-            if ({differ}) begin
-                if (errors < 10) $display("MISMATCH cycle %0d", cycles);
-                errors = errors + 1;
-            end
-            if ({count_port} !== 1'b0) counted = counted + 1;
-            cycles = cycles + 1;
-            #4 clock = 1'b0;
-            {scan}
-        end
-        $fclose(fd);
-        if (errors == 0 && cycles > 0)
-            $display("RESULT PASS %0d cycles %0d counted", cycles, counted);
-        else
-            $display("RESULT FAIL %0d cycles %0d mismatches", cycles, errors);
-        $finish;
-    end
-endmodule
-"#,
-        differ = differ.join(" || ")
-    );
-    v
-}
-
-/// Writes the Verilog, the bench and the vectors under `target/sine_rom_ecc/<dir>`, runs
-/// Icarus and asserts the PASS line (all cycles, `counted` cycles with the count port high).
-fn icarus(dir: &str, module: &str, verilog: String, tb: String, vectors: &str, counted: usize) {
-    let dir = common::target_dir().join("sine_rom_ecc").join(dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(dir.join(format!("{module}.v")), verilog).unwrap();
-    std::fs::write(dir.join(format!("{module}_tb.v")), tb).unwrap();
-    std::fs::write(dir.join("vectors.txt"), vectors).unwrap();
-    let text = common::icarus_run(
-        &dir,
-        &[],
-        &[format!("{module}_tb.v"), format!("{module}.v")],
-    );
-    let result = text
-        .lines()
-        .find(|l| l.starts_with("RESULT"))
-        .unwrap_or_else(|| panic!("no RESULT line from the bench:\n{text}"));
-    let cycles = vectors.lines().count();
-    assert_eq!(
-        result,
-        format!("RESULT PASS {cycles} cycles {counted} counted"),
-        "\n{text}"
-    );
-}
-
 /// Many stimulus cases back to back, a reset first.
 fn long_stimulus(seed: u64, lines: u32, a: u32, cases: u64) -> Vec<EccInputs> {
     let mut out = vec![];
@@ -302,10 +187,10 @@ fn rom_icarus<const A: usize, const D: usize>(lines: u32, seed: u64) {
         nonzero += usize::from(d != 0);
         vectors += &format!("{:x} {:x} {:x}\n", c.m_a, c.m0, (d as u64) & dmask);
     }
-    let tb = bench("sine_rom", &[("m", A), ("m0", A)], &[("data", D)], "data");
+    let tb = common::replay_bench("sine_rom", &[("m", A), ("m0", A)], &[("data", D)], "data");
     let v = sine_rom_verilog::<A, D>(lines, "sine_rom");
     let dir = format!("rom_a{A}_d{D}_k{lines}");
-    icarus(&dir, "sine_rom", v, tb, &vectors, nonzero);
+    common::replay("sine_rom_ecc", &dir, "sine_rom", &v, &tb, &vectors, nonzero);
 }
 
 fn ecc_icarus<const A: usize>(lines: u32, seed: u64) {
@@ -329,7 +214,7 @@ fn ecc_icarus<const A: usize>(lines: u32, seed: u64) {
         );
     }
     assert!(valids > 1000, "too few results in the stimulus");
-    let tb = bench(
+    let tb = common::replay_bench(
         "ecc_corrector",
         &[
             ("reset", 1),
@@ -345,7 +230,15 @@ fn ecc_icarus<const A: usize>(lines: u32, seed: u64) {
     );
     let v = ecc_corrector_verilog::<A>(lines, "ecc_corrector");
     let dir = format!("ecc_a{A}_k{lines}");
-    icarus(&dir, "ecc_corrector", v, tb, &vectors, valids);
+    common::replay(
+        "sine_rom_ecc",
+        &dir,
+        "ecc_corrector",
+        &v,
+        &tb,
+        &vectors,
+        valids,
+    );
 }
 
 #[test]
