@@ -1,22 +1,10 @@
-//! Bit-true model of `encspeed_core` (layer 2): what the hardware computes, clock cycle for
-//! clock cycle, in the hardware's integer widths.
-//!
-//! [`Table1`] is Rairán's Table 1 as one step per clock (ts = one clock period), in the
-//! order of DESIGN-NOTES §3, with counters that saturate at the counter width instead of
-//! wrapping. [`CoreModel`] wraps it with the input pipeline of the hardware (two-flop
-//! synchroniser and rising-edge detector on A) and the start-up rules, so that its outputs
-//! are those of the emitted Verilog after every rising clock edge.
-//!
-//! Start-up rule (the "false edge" decision): a channel that is already high when reset
-//! releases is not an encoder pulse. The core therefore behaves exactly as [`Table1`] run
-//! on the A samples A₁, A₂, … taken at the clock edges after reset, with lep_k = A_k ∧ ¬A_{k−1}
-//! and A₀ := A₁, delayed by [`CORE_LATENCY_CYCLES`] clock cycles; the ts/dt time base is held
-//! in reset for those cycles so that the delay is a pure latency (the `core_is_table1_delayed`
-//! test checks this equivalence). `cfg_dt` is registered: a change reaches Table 1 one
-//! clock edge after it is applied (so dt changes are seen one cycle earlier, relative to the
-//! pulses, than in the delayed-Table-1 picture; with a constant dt this does not matter).
+//! Rairán's Table 1 as one step per clock (ts = one clock period), in the order of
+//! DESIGN-NOTES §3, with counters that saturate at the counter width instead of wrapping:
+//! the estimator engine of `encspeed_core` (layer 2, bit-true). The whole core, with its
+//! quadrature front end, speed calculators and faults, is [`crate::core::CoreModel`]
+//! (re-exported here); its Rairán pulse `lep` is a decoder step.
 
-use crate::params::{Params, CORE_LATENCY_CYCLES, MIN_DT_CYCLES};
+use crate::params::{Params, MIN_DT_CYCLES};
 
 /// Outputs of [`Table1`] after a step (the hardware's registers after a clock edge).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -136,111 +124,7 @@ impl Table1 {
     }
 }
 
-/// Inputs of `encspeed_core` during one clock cycle (sampled at its rising edge).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct CoreInputs {
-    /// Synchronous active-high reset.
-    pub reset: bool,
-    /// Encoder channel A (asynchronous).
-    pub enc_a: bool,
-    /// Encoder channel B (asynchronous; not used by the x1 estimator yet).
-    pub enc_b: bool,
-    /// Encoder index Z (asynchronous; not used by the x1 estimator yet).
-    pub enc_z: bool,
-    /// dt in clock cycles.
-    pub cfg_dt: u64,
-}
-
-/// Outputs of `encspeed_core` after a rising clock edge.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct CoreOutputs {
-    /// Nep1.
-    pub nep: u64,
-    /// Ndt1.
-    pub ndt: u64,
-    /// One-cycle strobe: `nep` or `ndt` was just written.
-    pub update: bool,
-    /// No pulse for the timeout.
-    pub stalled: bool,
-    /// `cfg_dt` is below 2 and is being used as 2 (combinational from `cfg_dt`).
-    pub cfg_error: bool,
-}
-
-/// The input pipeline state of the core, for waveforms.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct FrontState {
-    /// First and second synchroniser flops of A.
-    pub sync_a: [bool; 2],
-    /// A one cycle before `sync_a[1]` (edge detector).
-    pub prev_a: bool,
-    /// Clock edges since reset, saturating at 3 (start-up sequencing).
-    pub fill: u8,
-    /// `cfg_dt` registered at the last edge, values below 2 as 2 (the hardware holds
-    /// dt − 1; it is not reset).
-    pub dt_reg: u64,
-}
-
-/// Bit-true model of the whole `encspeed_core`.
-#[derive(Clone, Debug)]
-pub struct CoreModel {
-    front: FrontState,
-    engine: Table1,
-}
-
-impl CoreModel {
-    /// A core model in the state the hardware has after reset.
-    pub fn new(p: &Params) -> CoreModel {
-        CoreModel {
-            front: FrontState::default(),
-            engine: Table1::new(p),
-        }
-    }
-
-    /// The Table 1 registers.
-    pub fn engine(&self) -> &Table1 {
-        &self.engine
-    }
-
-    /// The synchroniser and edge-detector registers.
-    pub fn front(&self) -> FrontState {
-        self.front
-    }
-
-    /// One rising clock edge with `inp` applied; returns the outputs after the edge.
-    pub fn step(&mut self, inp: CoreInputs) -> CoreOutputs {
-        let f = self.front;
-        // Combinational values in the cycle before the edge, from the registers.
-        let lep = f.sync_a[1] && !f.prev_a && f.fill == 3;
-        let engine_reset = inp.reset || f.fill < CORE_LATENCY_CYCLES as u8;
-        if engine_reset {
-            self.engine.reset();
-        } else {
-            self.engine.step(lep, f.dt_reg);
-        }
-        let dt_reg = inp.cfg_dt.max(MIN_DT_CYCLES);
-        self.front = if inp.reset {
-            FrontState {
-                dt_reg,
-                ..FrontState::default()
-            }
-        } else {
-            FrontState {
-                sync_a: [inp.enc_a, f.sync_a[0]],
-                prev_a: f.sync_a[1],
-                fill: (f.fill + 1).min(3),
-                dt_reg,
-            }
-        };
-        let o = self.engine.outputs();
-        CoreOutputs {
-            nep: o.nep,
-            ndt: o.ndt,
-            update: o.update,
-            stalled: o.stalled,
-            cfg_error: inp.cfg_dt < MIN_DT_CYCLES,
-        }
-    }
-}
+pub use crate::core::{CoreInputs, CoreModel, CoreOutputs};
 
 #[cfg(test)]
 mod tests {
@@ -313,48 +197,5 @@ mod tests {
         let o = t.step(true, 2);
         assert_eq!(o.ndt, 255);
         assert!(!o.stalled);
-    }
-
-    #[test]
-    fn core_is_table1_delayed() {
-        // Pseudo-random A pattern (xorshift), starting high to exercise the start-up rule.
-        let p = params(7);
-        let mut core = CoreModel::new(&p);
-        let mut table = Table1::new(&p);
-        let mut x: u32 = 0x1234_5678;
-        let mut a_samples = vec![];
-        for _ in 0..5000 {
-            x ^= x << 13;
-            x ^= x >> 17;
-            x ^= x << 5;
-            a_samples.push(a_samples.is_empty() || x % 5 < 2);
-        }
-        let core_out: Vec<CoreOutputs> = a_samples
-            .iter()
-            .map(|&a| {
-                core.step(CoreInputs {
-                    enc_a: a,
-                    cfg_dt: 7,
-                    ..Default::default()
-                })
-            })
-            .collect();
-        let l = CORE_LATENCY_CYCLES as usize;
-        let mut prev = a_samples[0];
-        for (k, &a) in a_samples.iter().enumerate() {
-            let expect = table.step(a && !prev, 7);
-            prev = a;
-            if k + l < core_out.len() {
-                let got = core_out[k + l];
-                assert_eq!(
-                    (got.nep, got.ndt, got.update),
-                    (expect.nep, expect.ndt, expect.update),
-                    "cycle {k}"
-                );
-            }
-        }
-        for o in &core_out[..l] {
-            assert_eq!((o.nep, o.ndt, o.update), (0, 1, false));
-        }
     }
 }

@@ -900,6 +900,7 @@ impl Experiment {
                 enc_b: s.b,
                 enc_z: s.z,
                 cfg_dt: *dt,
+                ..CoreInputs::default()
             });
         }
     }

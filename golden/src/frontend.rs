@@ -92,6 +92,9 @@ pub struct GlitchFilterOutputs {
     pub level_out: bool,
     /// Rejected pulses since reset (saturating).
     pub glitches: u64,
+    /// One cycle: this edge rejected a pulse (the event `glitches` counts, also when it
+    /// has saturated).
+    pub rejected: bool,
 }
 
 /// Registers of a [`GlitchFilter`].
@@ -103,6 +106,8 @@ pub struct GlitchFilterState {
     pub run: u64,
     /// Rejected pulses.
     pub glitches: u64,
+    /// `rejected` register.
+    pub rejected: bool,
 }
 
 /// Programmable glitch filter of one channel.
@@ -144,6 +149,7 @@ impl GlitchFilter {
         GlitchFilterOutputs {
             level_out: self.s.out,
             glitches: self.s.glitches,
+            rejected: self.s.rejected,
         }
     }
 
@@ -155,7 +161,10 @@ impl GlitchFilter {
             inp.cfg_filter
         );
         let s = self.s;
-        let mut n = s;
+        let mut n = GlitchFilterState {
+            rejected: false,
+            ..s
+        };
         if inp.reset {
             n = GlitchFilterState::default();
         } else if inp.level_in != s.out {
@@ -168,6 +177,7 @@ impl GlitchFilter {
         } else {
             if s.run != 0 {
                 n.glitches = sat_inc(s.glitches, self.glitch_max);
+                n.rejected = true;
             }
             n.run = 0;
         }
@@ -354,6 +364,8 @@ pub struct CounterOutputs {
     pub rev_error: bool,
     /// Revolutions with the wrong count (saturating).
     pub rev_error_count: u64,
+    /// One cycle: this edge found a bad revolution (the event `rev_error_count` counts).
+    pub rev_fault: bool,
 }
 
 /// Registers of a [`PositionCounter`].
@@ -381,6 +393,8 @@ pub struct CounterState {
     pub rev_error: bool,
     /// `rev_error_count` register.
     pub rev_error_count: u64,
+    /// `rev_fault` register.
+    pub rev_fault: bool,
 }
 
 /// Position modulo the counts per revolution, index reset/latch and revolution check.
@@ -452,6 +466,7 @@ impl PositionCounter {
             index: self.s.index,
             rev_error: self.s.rev_error,
             rev_error_count: self.s.rev_error_count,
+            rev_fault: self.s.rev_fault,
         }
     }
 
@@ -504,6 +519,7 @@ impl PositionCounter {
         n.rev_steps = steps;
         n.rev_forward = forward;
         n.rev_mixed = mixed;
+        n.rev_fault = false;
         if rise {
             let latch = inp.cfg_z_mode == Z_MODE_LATCH || inp.cfg_z_mode == Z_MODE_LATCH_RESET;
             let reset = inp.cfg_z_mode == Z_MODE_RESET || inp.cfg_z_mode == Z_MODE_LATCH_RESET;
@@ -520,6 +536,7 @@ impl PositionCounter {
                 && steps != rev_len;
             if bad {
                 n.rev_error = true;
+                n.rev_fault = true;
                 n.rev_error_count = sat_inc(s.rev_error_count, self.error_max);
             }
             n.armed = true;

@@ -4,13 +4,17 @@
 //! clock samples; [`ideal`] runs Rairán's estimator and the classical PC/ET estimators in
 //! continuous time; [`mt`] is the M/T estimator (groundwork for the hardware M/T);
 //! [`rairan`] holds the paper's error bounds and the hardware's error budget.
-//! Layer 2 (bit-true): [`bittrue`] computes, cycle for cycle and in the hardware's integer
-//! widths, what `encspeed_core` computes. [`params`] is the one validated parameter type
+//! Layer 2 (bit-true): [`core`] computes, cycle for cycle and in the hardware's integer
+//! widths, what `encspeed_core` computes, from the blocks' bit-true models ([`bittrue`] is
+//! Rairán's Table 1, [`frontend`], [`speed_calc`], [`pc_counter`], [`et_timer`],
+//! [`mt_counter`]). [`params`] is the one validated parameter type
 //! shared by the golden model, the HDL constructors and the generated manifest.
 //!
 //! This crate never depends on rust-hdl.
 
+pub mod baseline_speeds;
 pub mod bittrue;
+pub mod core;
 pub mod divider;
 pub mod ecc_corrector;
 pub mod eccentric;
@@ -24,7 +28,10 @@ pub mod mt_counter;
 pub mod params;
 pub mod pc_counter;
 pub mod plant;
+pub mod ports;
 pub mod rairan;
+pub mod regmap;
 pub mod sine_rom;
 pub mod smallsignal;
 pub mod speed_calc;
+pub mod wb_regs;

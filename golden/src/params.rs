@@ -14,13 +14,23 @@ pub const MIN_COUNTER_BITS: u32 = 8;
 pub const MAX_COUNTER_BITS: u32 = 32;
 /// Shortest dt the estimator accepts, in clock cycles (see [`ParamError::DtTooShort`]).
 pub const MIN_DT_CYCLES: u64 = 2;
-/// Latency, in clock cycles, from a rising edge of `enc_a` sampled at a clock edge to the
-/// clock edge at which `nep`/`ndt` show the result of that sample (two-flop synchroniser).
-pub const CORE_LATENCY_CYCLES: u32 = 2;
+/// Fractional bits F of every speed output (`speed_frac_bits` in the manifest): a speed is
+/// `raw · 2^−F` in units of ω_lim. Fixed so that the hardware's widths depend on one
+/// generation parameter only (rust-hdl widths are const generics, one build per width).
+pub const SPEED_FRAC_BITS: u32 = 16;
+/// Width of the `cfg_filter` port (bits): glitch filters up to 65,535 clock cycles.
+pub const FILTER_BITS: u32 = 16;
+/// Width of the glitch, illegal-transition and revolution-error counters (bits); they
+/// saturate at 65,535.
+pub const ERROR_COUNT_BITS: u32 = 16;
+/// Width of `position` and `z_latch` (bits); positions are below 4·lines.
+pub const POSITION_BITS: u32 = 32;
+/// Most lines per revolution: the x4 count of a revolution, 4·lines, must fit 32 bits.
+pub const MAX_LINES: u32 = 1 << 30;
 
 /// Parameters as a user states them. Units are in the field names' docs.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, default)]
 pub struct Spec {
     /// Frequency of `clock` in Hz; one Table 1 step (ts) per clock cycle.
     pub clock_hz: f64,
@@ -32,7 +42,8 @@ pub struct Spec {
     /// Width of `cfg_dt`, of the ts counter and of the Cep/Cdt/Nep1/Ndt1 registers (bits).
     pub counter_bits: u32,
     /// Zero-speed timeout in seconds at the nominal dt: `stalled` rises when no encoder
-    /// pulse has come for this long (rounded up to whole dt intervals).
+    /// pulse has come for this long (rounded up to whole dt intervals). It is the value
+    /// used while the `cfg_timeout` port is 0.
     pub timeout_s: f64,
 }
 
@@ -57,6 +68,9 @@ pub enum ParamError {
     ClockHz(f64),
     /// `lines` is zero.
     ZeroLines,
+    /// `lines` is above [`MAX_LINES`].
+    TooManyLines(u32),
+
     /// `dt_cycles` is below [`MIN_DT_CYCLES`].
     DtTooShort(u64),
     /// `counter_bits` is outside [`MIN_COUNTER_BITS`]..=[`MAX_COUNTER_BITS`].
@@ -78,6 +92,11 @@ impl fmt::Display for ParamError {
                 write!(f, "clock_hz = {v}: must be a finite frequency > 0 Hz")
             }
             ParamError::ZeroLines => write!(f, "lines = 0: the disc needs at least one line"),
+            ParamError::TooManyLines(v) => write!(
+                f,
+                "lines = {v}: at most {MAX_LINES} (the x4 count of a revolution must fit 32 bits)"
+            ),
+
             ParamError::DtTooShort(v) => write!(
                 f,
                 "dt_cycles = {v}: dt must be at least {MIN_DT_CYCLES} clock cycles \
@@ -148,6 +167,10 @@ impl Params {
         if spec.lines == 0 {
             return Err(ParamError::ZeroLines);
         }
+        if spec.lines > MAX_LINES {
+            return Err(ParamError::TooManyLines(spec.lines));
+        }
+
         if spec.dt_cycles < MIN_DT_CYCLES {
             return Err(ParamError::DtTooShort(spec.dt_cycles));
         }
@@ -229,11 +252,30 @@ impl Params {
     pub fn omega_lim_rps(&self) -> f64 {
         omega_lim_rps(self.spec.clock_hz, self.spec.lines, self.spec.dt_cycles)
     }
-    /// Largest value Cep/Nep1 can reach at the largest `cfg_dt`: rising edges of A are at
-    /// least two cycles apart after the edge detector, and a window holds the pulse that
-    /// restarted it plus those in the next dt − 1 cycles: 1 + ⌊(dt − 1)/2⌋.
-    pub fn nep_reachable_max(&self) -> u64 {
-        1 + (self.counter_max() - 1) / 2
+    /// Fractional bits F of the speed outputs ([`SPEED_FRAC_BITS`]).
+    pub fn speed_frac_bits(&self) -> u32 {
+        SPEED_FRAC_BITS
+    }
+    /// Width of every speed output: N + F + 1 (two's complement).
+    pub fn speed_bits(&self) -> u32 {
+        self.spec.counter_bits + SPEED_FRAC_BITS + 1
+    }
+    /// Width of `cfg_filter` ([`FILTER_BITS`]).
+    pub fn filter_bits(&self) -> u32 {
+        FILTER_BITS
+    }
+    /// Width of the fault counters ([`ERROR_COUNT_BITS`]).
+    pub fn error_count_bits(&self) -> u32 {
+        ERROR_COUNT_BITS
+    }
+    /// Width of `position` and `z_latch` ([`POSITION_BITS`]).
+    pub fn position_bits(&self) -> u32 {
+        POSITION_BITS
+    }
+    /// Counts per revolution in a decoding mode of `mode_shift` = log2(steps per line):
+    /// lines · 2^mode_shift.
+    pub fn counts_per_rev(&self, mode_shift: u32) -> u64 {
+        u64::from(self.spec.lines) << mode_shift
     }
 }
 
@@ -260,7 +302,9 @@ mod tests {
         // 1 s / 1 ms = 1000 intervals
         assert_eq!(p.timeout_dt(), 1000);
         assert_eq!(p.counter_max(), 16_777_215);
-        assert_eq!(p.nep_reachable_max(), 8_388_608);
+        // 24 + 16 + 1
+        assert_eq!(p.speed_bits(), 41);
+        assert_eq!(p.counts_per_rev(2), 4096);
     }
 
     #[test]
@@ -271,6 +315,8 @@ mod tests {
             (with(|s| s.clock_hz = 0.0), "clock_hz"),
             (with(|s| s.clock_hz = f64::INFINITY), "clock_hz"),
             (with(|s| s.lines = 0), "lines"),
+            (with(|s| s.lines = MAX_LINES + 1), "lines"),
+
             (with(|s| s.dt_cycles = 1), "dt_cycles"),
             (with(|s| s.dt_cycles = 0), "dt_cycles"),
             (with(|s| s.counter_bits = 7), "counter_bits"),

@@ -1,72 +1,173 @@
-//! `encspeed_core`: the top of the IP.
+//! `encspeed_core`: the top of the IP. Its bit-true model is [`golden::core::CoreModel`],
+//! whose module docs give the rules this file wires (start-up hold, reversal, priming, mode
+//! scaling, configuration defaults, faults, `valid`).
 //!
 //! ```text
-//! enc_a ─ TwoFlopSync ─ RisingEdge ─ lep ─┬─ Timebase ── tick, restart, Cdt ─┐   stalled
-//!                            ▲             └──────────────── SyncEstimator ──┴─ nep, ndt, update
-//!                 Startup ───┴─ (holds Timebase and SyncEstimator in reset for 2 edges,
-//!                               masks the edge detector for the 3rd)
+//! enc_a ─ TwoFlopSync ─ GlitchFilter ─┐                      ┌─ PositionCounter ─ position, z_latch, index
+//! enc_b ─ TwoFlopSync ─ GlitchFilter ─┴─ QuadratureDecoder ──┤
+//! enc_z ─ TwoFlopSync ─ GlitchFilter ────────────────────────┘ (z)
+//!                          step, forward ─┬─ Timebase + SyncEstimator ─ nep, ndt ─ SpeedCalc ─ ModeScale ×3 ─ speed_n1..n3
+//!                                         └─ PcCounter, EtTimer, MtCounter ─ BaselineSpeeds ─ speed_pc, speed_et, speed_mt
+//! Startup (holds decoder and position counter through the filter delay), FaultFlags.
 //! ```
 //!
-//! Ports (all synchronous to `clock`, reset synchronous and active high):
-//! - `enc_a`, `enc_b`, `enc_z`: raw encoder channels (asynchronous). The x1 estimator uses
-//!   A only; B and Z are reserved for quadrature decoding and the index.
-//! - `cfg_dt[N-1:0]`: dt in clock cycles, registered: a change takes effect one cycle later
-//!   (values below 2 are used as 2 and flag `cfg_error`).
-//! - `nep[N-1:0]`, `ndt[N-1:0]`: Nep1 and Ndt1 of Rairán's Table 1 (0 and 1 after reset).
-//! - `update`: one cycle high when `nep` or `ndt` has just been written.
-//! - `stalled`: no pulse for the zero-speed timeout.
-//! - `cfg_error`: `cfg_dt` < 2 (combinational from `cfg_dt`).
-//!
-//! Latency: the core is Table 1 run on the samples of `enc_a` taken at each clock edge after
-//! reset, delayed by 2 clock cycles (see `golden::bittrue`).
+//! The port table, widths and latencies are in docs/architecture.md and in the generated
+//! manifest; widths: N = `counter_bits`, S = N + F + 1 with F = 16 (`speed_frac_bits`),
+//! P = 2N + 1 (the speed calculator's products).
 
-use crate::rising_edge::RisingEdge;
+use crate::baseline_speeds::BaselineSpeeds;
+use crate::fault_flags::FaultFlags;
+use crate::glitch_filter::GlitchFilter;
+use crate::mode_scale::ModeScale;
+use crate::position_counter::PositionCounter;
+use crate::quadrature_decoder::QuadratureDecoder;
+use crate::speed_calc::SpeedCalc;
+use crate::speed_hold::SpeedHold;
 use crate::startup::Startup;
 use crate::sync_estimator::SyncEstimator;
 use crate::timebase::Timebase;
 use crate::two_flop_sync::TwoFlopSync;
-use golden::params::Params;
+use crate::{EtTimer, MtCounter, PcCounter};
+use golden::params::{
+    Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
+};
 use rust_hdl::prelude::*;
 
-/// The encoder speed core with N-bit counters.
+const F: usize = SPEED_FRAC_BITS as usize;
+const FB: usize = FILTER_BITS as usize;
+const G: usize = ERROR_COUNT_BITS as usize;
+const C: usize = POSITION_BITS as usize;
+
+/// The encoder interface core with N-bit counters (P = 2N + 1, S = N + 17).
 #[derive(LogicBlock)]
-pub struct EncspeedCore<const N: usize> {
-    /// Core clock; one Table 1 step per cycle.
+pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
+    /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Synchronous active-high reset.
     pub reset: Signal<In, Bit>,
-    /// Encoder channel A.
+    /// Encoder channel A (asynchronous).
     pub enc_a: Signal<In, Bit>,
-    /// Encoder channel B (reserved).
+    /// Encoder channel B (asynchronous).
     pub enc_b: Signal<In, Bit>,
-    /// Encoder index Z (reserved).
+    /// Encoder index Z (asynchronous).
     pub enc_z: Signal<In, Bit>,
-    /// dt in clock cycles.
+    /// dt in clock cycles (0: generation default; 1: used as 2 and `cfg_error`).
     pub cfg_dt: Signal<In, Bits<N>>,
-    /// Nep1.
+    /// Zero-speed timeout in dt intervals (0: generation default).
+    pub cfg_timeout: Signal<In, Bits<N>>,
+    /// Glitch filter length, clock cycles (0: off).
+    pub cfg_filter: Signal<In, Bits<FB>>,
+    /// 0 = x1, 1 = x2, 2 = x4 (3: x4 and `cfg_error`).
+    pub cfg_mode: Signal<In, Bits<2>>,
+    /// 0 = ignore Z, 1 = Z resets the position, 2 = Z latches it, 3 = latch then reset.
+    pub cfg_z_mode: Signal<In, Bits<2>>,
+    /// Clear the sticky fault flags.
+    pub clear_faults: Signal<In, Bit>,
+    /// Position in steps, 0 .. lines·2^s − 1.
+    pub position: Signal<Out, Bits<C>>,
+    /// Position at the last index edge.
+    pub z_latch: Signal<Out, Bits<C>>,
+    /// One cycle per index edge.
+    pub index: Signal<Out, Bit>,
+    /// Direction of the last step (1 = forward).
+    pub direction: Signal<Out, Bit>,
+    /// Nep1 (decoder steps).
     pub nep: Signal<Out, Bits<N>>,
     /// Ndt1.
     pub ndt: Signal<Out, Bits<N>>,
     /// Nep1 or Ndt1 just written.
     pub update: Signal<Out, Bit>,
-    /// Zero-speed timeout reached.
+    /// n1, two's complement Q(N).16, ω_lim.
+    pub speed_n1: Signal<Out, Bits<S>>,
+    /// n2, two's complement Q(N).16, ω_lim.
+    pub speed_n2: Signal<Out, Bits<S>>,
+    /// n3, two's complement Q(N).16, ω_lim.
+    pub speed_n3: Signal<Out, Bits<S>>,
+    /// One cycle: `speed_n1..3` just written.
+    pub speed_strobe: Signal<Out, Bit>,
+    /// Fixed-time (PC) speed, two's complement Q(N).16, ω_lim.
+    pub speed_pc: Signal<Out, Bits<S>>,
+    /// Fixed-space (ET) speed, two's complement Q(N).16, ω_lim.
+    pub speed_et: Signal<Out, Bits<S>>,
+    /// M/T speed, two's complement Q(N).16, ω_lim.
+    pub speed_mt: Signal<Out, Bits<S>>,
+    /// One cycle: `speed_pc`, `speed_et`, `speed_mt` just written.
+    pub baseline_strobe: Signal<Out, Bit>,
+    /// `speed_n3` is a measurement of the current direction, not stalled, legal config.
+    pub valid: Signal<Out, Bit>,
+    /// No step for the zero-speed timeout.
     pub stalled: Signal<Out, Bit>,
-    /// `cfg_dt` below 2.
+    /// Sticky: illegal transition.
+    pub fault_illegal: Signal<Out, Bit>,
+    /// Sticky: an A or B pulse shorter than the filter (glitch or over-speed).
+    pub fault_overspeed: Signal<Out, Bit>,
+    /// Sticky: a revolution with the wrong count.
+    pub fault_revolution: Signal<Out, Bit>,
+    /// `cfg_dt` = 1 or `cfg_mode` = 3 (registered).
     pub cfg_error: Signal<Out, Bit>,
-    pub(crate) sync_a: TwoFlopSync,
-    pub(crate) startup: Startup,
-    pub(crate) edge_a: RisingEdge,
+    /// Rejected pulses of A, B and Z (saturating).
+    pub glitch_count: Signal<Out, Bits<G>>,
+    /// Illegal transitions (saturating).
+    pub illegal_count: Signal<Out, Bits<G>>,
+    /// Revolutions with the wrong count (saturating).
+    pub rev_error_count: Signal<Out, Bits<G>>,
+    sync_a: TwoFlopSync,
+    sync_b: TwoFlopSync,
+    sync_z: TwoFlopSync,
+    startup: Startup,
+    filter_a: GlitchFilter<FB, G>,
+    filter_b: GlitchFilter<FB, G>,
+    filter_z: GlitchFilter<FB, G>,
+    decoder: QuadratureDecoder<G>,
+    counter: PositionCounter<C, G>,
     pub(crate) timebase: Timebase<N>,
-    pub(crate) table1: SyncEstimator<N>,
+    table1: SyncEstimator<N>,
+    calc: SpeedCalc<N, F, P, S>,
+    scale_n1: ModeScale<S>,
+    scale_n2: ModeScale<S>,
+    scale_n3: ModeScale<S>,
+    hold: SpeedHold<S>,
+    pc: PcCounter<N>,
+    et: EtTimer<N>,
+    mt: MtCounter<N>,
+    baseline: BaselineSpeeds<N, F, S>,
+    faults: FaultFlags,
+    have_dir: DFF<Bit>,
+    last_dir: DFF<Bit>,
+    et_have: DFF<Bit>,
+    dt_reg: DFF<Bits<N>>,
+    timeout_reg: DFF<Bits<N>>,
+    cfg_error_reg: DFF<Bit>,
+    front_reset: Signal<Local, Bit>,
+    reversal: Signal<Local, Bit>,
     engine_reset: Signal<Local, Bit>,
+    dt_eff: Signal<Local, Bits<N>>,
+    shift: Signal<Local, Bits<2>>,
+    counts_per_rev: Signal<Local, Bits<C>>,
+    n_zero: Constant<Bits<N>>,
+    n_one: Constant<Bits<N>>,
     min_dt: Constant<Bits<N>>,
+    default_dt: Constant<Bits<N>>,
+    default_timeout: Constant<Bits<N>>,
+    s_zero: Constant<Bits<S>>,
+    mode_x1: Constant<Bits<2>>,
+    mode_x2: Constant<Bits<2>>,
+    mode_invalid: Constant<Bits<2>>,
+    shift_zero: Constant<Bits<2>>,
+    shift_one: Constant<Bits<2>>,
+    shift_two: Constant<Bits<2>>,
+    lines_x1: Constant<Bits<C>>,
+    lines_x2: Constant<Bits<C>>,
+    lines_x4: Constant<Bits<C>>,
 }
 
-impl<const N: usize> EncspeedCore<N> {
+impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
     /// Build the core for validated parameters. Panics if `N` is not the parameters'
     /// counter width (the dispatch in [`crate::build_core`] guarantees it).
     pub fn new(p: &Params) -> Self {
         assert_eq!(p.counter_bits() as usize, N, "counter width mismatch");
+        assert!(P == 2 * N + 1 && S == N + F + 1, "derived widths");
+        let lines = |shift: u32| -> Bits<C> { (p.counts_per_rev(shift) & ((1u64 << C) - 1)).into() };
         Self {
             clock: Default::default(),
             reset: Default::default(),
@@ -74,53 +175,262 @@ impl<const N: usize> EncspeedCore<N> {
             enc_b: Default::default(),
             enc_z: Default::default(),
             cfg_dt: Default::default(),
+            cfg_timeout: Default::default(),
+            cfg_filter: Default::default(),
+            cfg_mode: Default::default(),
+            cfg_z_mode: Default::default(),
+            clear_faults: Default::default(),
+            position: Default::default(),
+            z_latch: Default::default(),
+            index: Default::default(),
+            direction: Default::default(),
             nep: Default::default(),
             ndt: Default::default(),
             update: Default::default(),
+            speed_n1: Default::default(),
+            speed_n2: Default::default(),
+            speed_n3: Default::default(),
+            speed_strobe: Default::default(),
+            speed_pc: Default::default(),
+            speed_et: Default::default(),
+            speed_mt: Default::default(),
+            baseline_strobe: Default::default(),
+            valid: Default::default(),
             stalled: Default::default(),
+            fault_illegal: Default::default(),
+            fault_overspeed: Default::default(),
+            fault_revolution: Default::default(),
             cfg_error: Default::default(),
+            glitch_count: Default::default(),
+            illegal_count: Default::default(),
+            rev_error_count: Default::default(),
             sync_a: Default::default(),
+            sync_b: Default::default(),
+            sync_z: Default::default(),
             startup: Default::default(),
-            edge_a: Default::default(),
-            timebase: Timebase::new(p.timeout_dt()),
+            filter_a: Default::default(),
+            filter_b: Default::default(),
+            filter_z: Default::default(),
+            decoder: Default::default(),
+            counter: Default::default(),
+            timebase: Default::default(),
             table1: Default::default(),
+            calc: Default::default(),
+            scale_n1: Default::default(),
+            scale_n2: Default::default(),
+            scale_n3: Default::default(),
+            hold: Default::default(),
+            pc: Default::default(),
+            et: Default::default(),
+            mt: Default::default(),
+            baseline: Default::default(),
+            faults: Default::default(),
+            have_dir: Default::default(),
+            last_dir: Default::default(),
+            et_have: Default::default(),
+            dt_reg: Default::default(),
+            timeout_reg: Default::default(),
+            cfg_error_reg: Default::default(),
+            front_reset: Default::default(),
+            reversal: Default::default(),
             engine_reset: Default::default(),
-            min_dt: Constant::new(golden::params::MIN_DT_CYCLES.into()),
+            dt_eff: Default::default(),
+            shift: Default::default(),
+            counts_per_rev: Default::default(),
+            n_zero: Constant::new(0.into()),
+            n_one: Constant::new(1.into()),
+            min_dt: Constant::new(MIN_DT_CYCLES.into()),
+            default_dt: Constant::new(p.dt_cycles().into()),
+            default_timeout: Constant::new(p.timeout_dt().into()),
+            s_zero: Constant::new(0.into()),
+            mode_x1: Constant::new(u64::from(golden::frontend::MODE_X1).into()),
+            mode_x2: Constant::new(u64::from(golden::frontend::MODE_X2).into()),
+            mode_invalid: Constant::new(u64::from(golden::frontend::MODE_INVALID).into()),
+            shift_zero: Constant::new(0.into()),
+            shift_one: Constant::new(1.into()),
+            shift_two: Constant::new(2.into()),
+            lines_x1: Constant::new(lines(0)),
+            lines_x2: Constant::new(lines(1)),
+            lines_x4: Constant::new(lines(2)),
         }
     }
 }
 
-impl<const N: usize> Logic for EncspeedCore<N> {
+impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P, S> {
     #[hdl_gen]
     fn update(&mut self) {
-        self.sync_a.clock.next = self.clock.val();
-        self.startup.clock.next = self.clock.val();
-        self.edge_a.clock.next = self.clock.val();
-        self.timebase.clock.next = self.clock.val();
-        self.table1.clock.next = self.clock.val();
+        clock!(
+            self, clock, sync_a, sync_b, sync_z, startup, filter_a, filter_b, filter_z, decoder,
+            counter, timebase, table1, calc, hold, pc, et, mt, baseline, faults
+        );
+        dff_setup!(
+            self,
+            clock,
+            have_dir,
+            last_dir,
+            et_have,
+            dt_reg,
+            timeout_reg,
+            cfg_error_reg
+        );
 
-        self.engine_reset.next = self.reset.val() | !self.startup.engine_run.val();
+        // Configuration: defaults for 0, dt below 2 used as 2; log2 of steps per line.
+        self.dt_eff.next = self.cfg_dt.val();
+        if self.cfg_dt.val() == self.n_zero.val() {
+            self.dt_eff.next = self.default_dt.val();
+        } else if self.cfg_dt.val() < self.min_dt.val() {
+            self.dt_eff.next = self.min_dt.val();
+        }
+        self.dt_reg.d.next = self.dt_eff.val();
+        self.timeout_reg.d.next = self.cfg_timeout.val();
+        if self.cfg_timeout.val() == self.n_zero.val() {
+            self.timeout_reg.d.next = self.default_timeout.val();
+        }
+        self.cfg_error_reg.d.next = (self.cfg_dt.val() == self.n_one.val())
+            | (self.cfg_mode.val() == self.mode_invalid.val());
+        self.shift.next = self.shift_two.val();
+        self.counts_per_rev.next = self.lines_x4.val();
+        if self.cfg_mode.val() == self.mode_x1.val() {
+            self.shift.next = self.shift_zero.val();
+            self.counts_per_rev.next = self.lines_x1.val();
+        } else if self.cfg_mode.val() == self.mode_x2.val() {
+            self.shift.next = self.shift_one.val();
+            self.counts_per_rev.next = self.lines_x2.val();
+        }
+
+        // Front end.
         self.sync_a.reset.next = self.reset.val();
-        self.startup.reset.next = self.reset.val();
-        self.edge_a.reset.next = self.reset.val();
-        self.timebase.reset.next = self.engine_reset.val();
-        self.table1.reset.next = self.engine_reset.val();
-
+        self.sync_b.reset.next = self.reset.val();
+        self.sync_z.reset.next = self.reset.val();
         self.sync_a.level_in.next = self.enc_a.val();
-        self.edge_a.level.next = self.sync_a.level_out.val();
-        self.edge_a.enable.next = self.startup.edge_enable.val();
-        self.timebase.lep.next = self.edge_a.pulse.val();
-        self.timebase.dt.next = self.cfg_dt.val();
-        self.table1.lep.next = self.edge_a.pulse.val();
+        self.sync_b.level_in.next = self.enc_b.val();
+        self.sync_z.level_in.next = self.enc_z.val();
+        self.startup.reset.next = self.reset.val();
+        self.startup.cfg_filter.next = self.cfg_filter.val();
+        self.front_reset.next = self.reset.val() | self.startup.hold.val();
+        self.filter_a.reset.next = self.reset.val();
+        self.filter_b.reset.next = self.reset.val();
+        self.filter_z.reset.next = self.reset.val();
+        self.filter_a.level_in.next = self.sync_a.level_out.val();
+        self.filter_b.level_in.next = self.sync_b.level_out.val();
+        self.filter_z.level_in.next = self.sync_z.level_out.val();
+        self.filter_a.cfg_filter.next = self.cfg_filter.val();
+        self.filter_b.cfg_filter.next = self.cfg_filter.val();
+        self.filter_z.cfg_filter.next = self.cfg_filter.val();
+        self.decoder.reset.next = self.front_reset.val();
+        self.decoder.a.next = self.filter_a.level_out.val();
+        self.decoder.b.next = self.filter_b.level_out.val();
+        self.decoder.cfg_mode.next = self.cfg_mode.val();
+        self.counter.reset.next = self.front_reset.val();
+        self.counter.step.next = self.decoder.step.val();
+        self.counter.forward.next = self.decoder.forward.val();
+        self.counter.z.next = self.filter_z.level_out.val();
+        self.counter.counts_per_rev.next = self.counts_per_rev.val();
+        self.counter.cfg_z_mode.next = self.cfg_z_mode.val();
+
+        // Direction tracking: a reversal restarts the Rairán estimator.
+        self.reversal.next = self.decoder.step.val()
+            & self.have_dir.q.val()
+            & (self.decoder.forward.val() ^ self.last_dir.q.val());
+        self.engine_reset.next = self.reset.val() | self.reversal.val();
+        if self.decoder.step.val() {
+            self.have_dir.d.next = true;
+            self.last_dir.d.next = self.decoder.forward.val();
+        }
+        if self.reset.val() {
+            self.have_dir.d.next = false;
+            self.last_dir.d.next = false;
+        }
+
+        // Rairán: Table 1 on decoder steps, primed by its first restart.
+        self.timebase.reset.next = self.engine_reset.val();
+        self.timebase.lep.next = self.decoder.step.val();
+        self.timebase.dt.next = self.dt_eff.val();
+        self.timebase.timeout.next = self.timeout_reg.q.val();
+        self.table1.reset.next = self.engine_reset.val();
+        self.table1.lep.next = self.decoder.step.val();
         self.table1.tick.next = self.timebase.tick.val();
         self.table1.restart.next = self.timebase.restart.val();
         self.table1.cdt.next = self.timebase.cdt.val();
+        self.calc.reset.next = self.engine_reset.val();
+        self.calc.start.next = self.table1.update.val() & self.table1.primed.val();
+        self.calc.nep.next = self.table1.nep.val();
+        self.calc.ndt.next = self.table1.ndt.val();
+        self.calc.negative.next = !self.last_dir.q.val();
+        self.scale_n1.value.next = self.calc.speed_n1.val();
+        self.scale_n2.value.next = self.calc.speed_n2.val();
+        self.scale_n3.value.next = self.calc.speed_n3.val();
+        self.scale_n1.shift.next = self.shift.val();
+        self.scale_n2.shift.next = self.shift.val();
+        self.scale_n3.shift.next = self.shift.val();
+        self.hold.clear.next = self.engine_reset.val();
+        self.hold.load.next = self.calc.valid.val();
+        self.hold.n1_in.next = self.scale_n1.scaled.val();
+        self.hold.n2_in.next = self.scale_n2.scaled.val();
+        self.hold.n3_in.next = self.scale_n3.scaled.val();
 
+        // Baselines: PC, ET, M/T on the same steps, converted at each window end.
+        self.pc.reset.next = self.reset.val();
+        self.et.reset.next = self.reset.val();
+        self.mt.reset.next = self.reset.val();
+        self.pc.step.next = self.decoder.step.val();
+        self.et.step.next = self.decoder.step.val();
+        self.mt.step.next = self.decoder.step.val();
+        self.pc.forward.next = self.decoder.forward.val();
+        self.et.forward.next = self.decoder.forward.val();
+        self.mt.forward.next = self.decoder.forward.val();
+        self.pc.cfg_dt.next = self.dt_reg.q.val();
+        self.mt.cfg_dt.next = self.dt_reg.q.val();
+        self.et_have.d.next =
+            !self.engine_reset.val() & (self.et_have.q.val() | self.et.strobe.val());
+        self.baseline.reset.next = self.reset.val();
+        self.baseline.start.next = self.pc.strobe.val();
+        self.baseline.pc_count.next = self.pc.count.val();
+        self.baseline.et_period.next = self.et.period.val();
+        self.baseline.et_negative.next = self.et.negative.val();
+        self.baseline.et_valid.next =
+            (self.et_have.q.val() | self.et.strobe.val()) & !self.et.stalled.val();
+        self.baseline.mt_m.next = self.mt.m.val();
+        self.baseline.mt_t.next = self.mt.t.val();
+        self.baseline.mt_negative.next = self.mt.negative.val();
+        self.baseline.cfg_dt.next = self.dt_reg.q.val();
+        self.baseline.mode_shift.next = self.shift.val();
+
+        // Faults.
+        self.faults.reset.next = self.reset.val();
+        self.faults.clear_faults.next = self.clear_faults.val();
+        self.faults.illegal.next = self.decoder.illegal.val();
+        self.faults.rejected_a.next = self.filter_a.rejected.val();
+        self.faults.rejected_b.next = self.filter_b.rejected.val();
+        self.faults.rejected_z.next = self.filter_z.rejected.val();
+        self.faults.rev_fault.next = self.counter.rev_fault.val();
+
+        // Outputs.
+        self.position.next = self.counter.position.val();
+        self.z_latch.next = self.counter.z_latch.val();
+        self.index.next = self.counter.index.val();
+        self.direction.next = self.decoder.direction.val();
         self.nep.next = self.table1.nep.val();
         self.ndt.next = self.table1.ndt.val();
         self.update.next = self.table1.update.val();
+        self.speed_n1.next = self.hold.n1.val();
+        self.speed_n2.next = self.hold.n2.val();
+        self.speed_n3.next = self.hold.n3.val();
+        self.speed_strobe.next = self.hold.strobe.val();
+        self.speed_pc.next = self.baseline.speed_pc.val();
+        self.speed_et.next = self.baseline.speed_et.val();
+        self.speed_mt.next = self.baseline.speed_mt.val();
+        self.baseline_strobe.next = self.baseline.valid.val();
         self.stalled.next = self.timebase.stalled.val();
-        self.cfg_error.next = self.cfg_dt.val() < self.min_dt.val();
+        self.valid.next =
+            self.hold.have_speed.val() & !self.timebase.stalled.val() & !self.cfg_error_reg.q.val();
+        self.fault_illegal.next = self.faults.fault_illegal.val();
+        self.fault_overspeed.next = self.faults.fault_overspeed.val();
+        self.fault_revolution.next = self.faults.fault_revolution.val();
+        self.cfg_error.next = self.cfg_error_reg.q.val();
+        self.glitch_count.next = self.faults.glitch_count.val();
+        self.illegal_count.next = self.decoder.illegal_count.val();
+        self.rev_error_count.next = self.counter.rev_error_count.val();
     }
 }
 
@@ -137,7 +447,7 @@ mod tests {
             ..Default::default()
         })
         .unwrap();
-        let mut uut = EncspeedCore::<12>::new(&p);
+        let mut uut = EncspeedCore::<12, 25, 29>::new(&p);
         uut.connect_all();
         yosys_validate("encspeed_core", &generate_verilog(&uut)).unwrap();
     }

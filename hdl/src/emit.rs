@@ -5,7 +5,8 @@
 //! staleness byte for byte.
 
 use crate::sim::build_core;
-use golden::params::{Params, Spec, CORE_LATENCY_CYCLES};
+use golden::params::{Params, Spec};
+use golden::ports::{core_ports, Latency, Port};
 use rust_hdl::prelude::{check_all, Block, ModuleDefines};
 use serde::Serialize;
 
@@ -25,6 +26,10 @@ pub struct EmitInfo {
 
 #[derive(Serialize)]
 struct Manifest<'a> {
+    /// Fractional bits of every speed output: value = raw · 2^−speed_frac_bits ω_lim.
+    speed_frac_bits: u32,
+    /// Width of every speed output (two's complement).
+    speed_bits: u32,
     generator: Generator<'a>,
     spec: &'a Spec,
     derived: Derived,
@@ -51,83 +56,10 @@ struct Derived {
     counter_max: u64,
     /// `stalled` threshold, dt intervals.
     timeout_dt: u64,
-    /// enc_a sample to nep/ndt, clock cycles.
-    latency_cycles: u32,
-}
-
-#[derive(Serialize)]
-struct Port {
-    name: &'static str,
-    direction: &'static str,
-    width: u32,
-    description: &'static str,
-}
-
-fn ports(n: u32) -> Vec<Port> {
-    let p = |name, direction, width, description| Port {
-        name,
-        direction,
-        width,
-        description,
-    };
-    vec![
-        p(
-            "clock",
-            "input",
-            1,
-            "core clock; one Table 1 step (ts) per rising edge",
-        ),
-        p("reset", "input", 1, "synchronous, active high"),
-        p(
-            "enc_a",
-            "input",
-            1,
-            "encoder channel A, asynchronous; pulses are its rising edges",
-        ),
-        p(
-            "enc_b",
-            "input",
-            1,
-            "encoder channel B, asynchronous; reserved (not used yet)",
-        ),
-        p(
-            "enc_z",
-            "input",
-            1,
-            "encoder index Z, asynchronous; reserved (not used yet)",
-        ),
-        p(
-            "cfg_dt",
-            "input",
-            n,
-            "dt in clock cycles; values below 2 are used as 2",
-        ),
-        p(
-            "nep",
-            "output",
-            n,
-            "Nep1: pulses in the last dt window that started at a pulse; 0 after reset",
-        ),
-        p(
-            "ndt",
-            "output",
-            n,
-            "Ndt1: whole dt intervals between the last two pulses; 1 after reset",
-        ),
-        p(
-            "update",
-            "output",
-            1,
-            "high for one cycle when nep or ndt has just been written",
-        ),
-        p(
-            "stalled",
-            "output",
-            1,
-            "no pulse for timeout_dt dt intervals (zero speed)",
-        ),
-        p("cfg_error", "output", 1, "cfg_dt < 2 (combinational)"),
-    ]
+    /// ω_lim at the nominal dt, rad/s.
+    omega_lim_rad_s: f64,
+    /// Latencies with the filter off (cfg_filter = 0), clock cycles.
+    latency: Latency,
 }
 
 /// The Verilog of any connected block, checked by rust-hdl, with its top module named
@@ -163,7 +95,7 @@ pub fn emit_core(p: &Params) -> EmitInfo {
     let tool = format!("encspeed {}", env!("CARGO_PKG_VERSION"));
     let body = build_core(p).verilog(TOP_MODULE);
     let s = p.spec();
-    let n = p.counter_bits();
+    let latency = Latency::new(p, 0);
     let mut header = String::new();
     let mut line = |t: String| {
         header.push_str("// ");
@@ -185,13 +117,20 @@ pub fn emit_core(p: &Params) -> EmitInfo {
         p.counter_max()
     ));
     line(
-        "Function: Rairan (2013) Table 1 synchronised speed estimator, one step per clock.".into(),
+        "Function: quadrature encoder interface: filtered x1/x2/x4 decoding, position, Rairan (2013) synchronised speed n1/n2/n3 and the PC, ET and M/T baselines in hardware, faults.".into(),
     );
     line(format!(
-        "Latency: Table 1 on the samples of enc_a at each clock edge after reset, delayed by {CORE_LATENCY_CYCLES} cycles."
+        "Speeds: two's complement, {} bits, speed_frac_bits = {}: value = raw * 2^-{} omega_lim (one line per dt).",
+        p.speed_bits(),
+        p.speed_frac_bits(),
+        p.speed_frac_bits()
+    ));
+    line(format!(
+        "Latency (cfg_filter = 0): A/B edge to position {} cycles; speed calculator {}; A/B edge that restarts Table 1 to speed_strobe {}.",
+        latency.edge_to_position, latency.speed_calc, latency.edge_to_speed_strobe
     ));
     line("Ports:".into());
-    for port in ports(n) {
+    for port in core_ports(p) {
         let w = if port.width == 1 {
             String::new()
         } else {
@@ -203,6 +142,8 @@ pub fn emit_core(p: &Params) -> EmitInfo {
         ));
     }
     let manifest = Manifest {
+        speed_frac_bits: p.speed_frac_bits(),
+        speed_bits: p.speed_bits(),
         generator: Generator {
             tool,
             rust_hdl: RUST_HDL_VERSION,
@@ -216,9 +157,10 @@ pub fn emit_core(p: &Params) -> EmitInfo {
             omega_lim_rps: p.omega_lim_rps(),
             counter_max: p.counter_max(),
             timeout_dt: p.timeout_dt(),
-            latency_cycles: CORE_LATENCY_CYCLES,
+            omega_lim_rad_s: p.omega_lim_rps() * std::f64::consts::TAU,
+            latency,
         },
-        ports: ports(n),
+        ports: core_ports(p),
     };
     EmitInfo {
         verilog: format!("{header}\n{body}"),

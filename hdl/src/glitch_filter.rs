@@ -36,7 +36,10 @@ pub struct GlitchFilter<const F: usize, const G: usize> {
     pub level_out: Signal<Out, Bit>,
     /// Rejected pulses since reset (saturating).
     pub glitches: Signal<Out, Bits<G>>,
+    /// One cycle: a pulse was rejected at the last edge (also once `glitches` saturates).
+    pub rejected: Signal<Out, Bit>,
     filtered: DFF<Bit>,
+    rejected_reg: DFF<Bit>,
     pub(crate) run: DFF<Bits<F>>,
     glitch_count: DFF<Bits<G>>,
     differs: Signal<Local, Bit>,
@@ -61,7 +64,9 @@ impl<const F: usize, const G: usize> Default for GlitchFilter<F, G> {
             cfg_filter: Default::default(),
             level_out: Default::default(),
             glitches: Default::default(),
+            rejected: Default::default(),
             filtered: Default::default(),
+            rejected_reg: Default::default(),
             run: Default::default(),
             glitch_count: Default::default(),
             differs: Default::default(),
@@ -78,28 +83,32 @@ impl<const F: usize, const G: usize> Default for GlitchFilter<F, G> {
 impl<const F: usize, const G: usize> Logic for GlitchFilter<F, G> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, filtered, run, glitch_count);
+        dff_setup!(self, clock, filtered, run, glitch_count, rejected_reg);
         // The input differs from the filtered level.
         self.differs.next = self.level_in.val() ^ self.filtered.q.val();
         self.run_next.next = self.run.q.val() + self.run_one.val();
         self.run.d.next = self.run_zero.val();
+        self.rejected_reg.d.next = false;
         if self.differs.val() {
             if self.run_next.val() >= self.cfg_filter.val() {
                 self.filtered.d.next = self.level_in.val();
             } else {
                 self.run.d.next = self.run_next.val();
             }
-        } else if (self.run.q.val() != self.run_zero.val())
-            & (self.glitch_count.q.val() != self.count_max.val())
-        {
-            self.glitch_count.d.next = self.glitch_count.q.val() + self.count_one.val();
+        } else if self.run.q.val() != self.run_zero.val() {
+            self.rejected_reg.d.next = true;
+            if self.glitch_count.q.val() != self.count_max.val() {
+                self.glitch_count.d.next = self.glitch_count.q.val() + self.count_one.val();
+            }
         }
         if self.reset.val() {
             self.filtered.d.next = false;
             self.run.d.next = self.run_zero.val();
             self.glitch_count.d.next = self.count_zero.val();
+            self.rejected_reg.d.next = false;
         }
         self.level_out.next = self.filtered.q.val();
+        self.rejected.next = self.rejected_reg.q.val();
         self.glitches.next = self.glitch_count.q.val();
     }
 }

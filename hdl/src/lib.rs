@@ -31,48 +31,56 @@
 //! [`build_core`] turns validated [`Params`](golden::params::Params) into a core of the right
 //! counter width behind the [`CoreSim`] trait (rust-hdl widths are const generics).
 
+pub mod baseline_speeds;
 pub mod core;
 pub mod ecc_arith;
 pub mod ecc_corrector;
 pub mod emit;
 pub mod et_timer;
+pub mod fault_flags;
 pub mod glitch_filter;
 pub mod ident_gatherer;
 pub mod ident_mac;
+pub mod mode_scale;
 pub mod mt_counter;
 pub mod pc_counter;
 pub mod position_counter;
 pub mod quadrature_decoder;
-pub mod rising_edge;
 pub mod seq_divider;
 pub mod sim;
 pub mod sine_rom;
 pub mod speed_calc;
+pub mod speed_hold;
 pub mod startup;
 pub mod sync_estimator;
 #[cfg(test)]
 mod test_support;
 pub mod timebase;
 pub mod two_flop_sync;
+pub mod wb_regs;
 
 pub use crate::core::EncspeedCore;
+pub use baseline_speeds::{baseline_speeds_verilog, BaselineSpeeds};
 pub use ecc_arith::EccArith;
 pub use ecc_corrector::{ecc_corrector_verilog, EccCorrector};
 pub use emit::{emit_core, EmitInfo};
 pub use et_timer::{et_timer_verilog, EtTimer};
+pub use fault_flags::FaultFlags;
 pub use glitch_filter::{glitch_filter_verilog, GlitchFilter};
 pub use ident_gatherer::{ident_gatherer_verilog, IdentGatherer};
 pub use ident_mac::IdentMac;
+pub use mode_scale::ModeScale;
 pub use mt_counter::{mt_counter_verilog, MtCounter};
 pub use pc_counter::{pc_counter_verilog, PcCounter};
 pub use position_counter::{position_counter_verilog, PositionCounter};
 pub use quadrature_decoder::{quadrature_decoder_verilog, QuadratureDecoder};
-pub use rising_edge::RisingEdge;
 pub use seq_divider::{seq_divider_verilog, SeqDivider};
 pub use sim::{build_core, CoreSim};
 pub use sine_rom::{sine_rom_verilog, SineRom};
 pub use speed_calc::{speed_calc_verilog, SpeedCalc};
+pub use speed_hold::SpeedHold;
 pub use startup::Startup;
 pub use sync_estimator::SyncEstimator;
 pub use timebase::Timebase;
 pub use two_flop_sync::TwoFlopSync;
+pub use wb_regs::{wb_regs_verilog, WbRegs};

@@ -61,6 +61,8 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     pub rev_error: Signal<Out, Bit>,
     /// Revolutions with a wrong count (saturating).
     pub rev_error_count: Signal<Out, Bits<G>>,
+    /// One cycle: the last edge found a bad revolution.
+    pub rev_fault: Signal<Out, Bit>,
     pub(crate) position_reg: DFF<Bits<C>>,
     latch_reg: DFF<Bits<C>>,
     index_reg: DFF<Bit>,
@@ -74,6 +76,7 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     rev_mixed: DFF<Bit>,
     error_reg: DFF<Bit>,
     error_count: DFF<Bits<G>>,
+    fault_reg: DFF<Bit>,
     limit: Signal<Local, Bits<C>>,
     stepped: Signal<Local, Bits<C>>,
     rise: Signal<Local, Bit>,
@@ -115,6 +118,7 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             index: Default::default(),
             rev_error: Default::default(),
             rev_error_count: Default::default(),
+            rev_fault: Default::default(),
             position_reg: Default::default(),
             latch_reg: Default::default(),
             index_reg: Default::default(),
@@ -128,6 +132,7 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             rev_mixed: Default::default(),
             error_reg: Default::default(),
             error_count: Default::default(),
+            fault_reg: Default::default(),
             limit: Default::default(),
             stepped: Default::default(),
             rise: Default::default(),
@@ -169,7 +174,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             rev_fwd,
             rev_mixed,
             error_reg,
-            error_count
+            error_count,
+            fault_reg
         );
         // R − 1 in C bits (R = 0 gives 2^C − 1).
         self.limit.next = self.counts_per_rev.val() - self.pos_one.val();
@@ -230,6 +236,7 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
 
         self.position_reg.d.next = self.stepped.val();
         self.index_reg.d.next = self.rise.val();
+        self.fault_reg.d.next = false;
         self.rev_any.d.next = self.any_now.val();
         self.rev_more.d.next = self.more_now.val();
         self.rev_over.d.next = self.over_now.val();
@@ -248,6 +255,7 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             }
             if self.bad.val() {
                 self.error_reg.d.next = true;
+                self.fault_reg.d.next = true;
                 if self.error_count.q.val() != self.count_max.val() {
                     self.error_count.d.next = self.error_count.q.val() + self.count_one.val();
                 }
@@ -272,12 +280,14 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             self.rev_mixed.d.next = false;
             self.error_reg.d.next = false;
             self.error_count.d.next = self.count_zero.val();
+            self.fault_reg.d.next = false;
         }
         self.position.next = self.position_reg.q.val();
         self.z_latch.next = self.latch_reg.q.val();
         self.index.next = self.index_reg.q.val();
         self.rev_error.next = self.error_reg.q.val();
         self.rev_error_count.next = self.error_count.q.val();
+        self.rev_fault.next = self.fault_reg.q.val();
     }
 }
 

@@ -37,48 +37,49 @@ pub trait CoreSim {
     fn finish_vcd(&mut self) -> std::io::Result<()>;
 }
 
-/// Dispatch a runtime counter width to the const-generic instance `$f::<N>($arg)`.
+/// Dispatch a runtime counter width N to the const-generic instance `$f::<N, 2N+1, N+17>`
+/// (the speed calculator's product width and the speed width, with 16 fractional bits).
 macro_rules! seq_width {
     ($bits:expr, $f:ident, $arg:expr) => {
         match $bits {
-            8 => $f::<8>($arg),
-            9 => $f::<9>($arg),
-            10 => $f::<10>($arg),
-            11 => $f::<11>($arg),
-            12 => $f::<12>($arg),
-            13 => $f::<13>($arg),
-            14 => $f::<14>($arg),
-            15 => $f::<15>($arg),
-            16 => $f::<16>($arg),
-            17 => $f::<17>($arg),
-            18 => $f::<18>($arg),
-            19 => $f::<19>($arg),
-            20 => $f::<20>($arg),
-            21 => $f::<21>($arg),
-            22 => $f::<22>($arg),
-            23 => $f::<23>($arg),
-            24 => $f::<24>($arg),
-            25 => $f::<25>($arg),
-            26 => $f::<26>($arg),
-            27 => $f::<27>($arg),
-            28 => $f::<28>($arg),
-            29 => $f::<29>($arg),
-            30 => $f::<30>($arg),
-            31 => $f::<31>($arg),
-            32 => $f::<32>($arg),
+            8 => $f::<8, 17, 25>($arg),
+            9 => $f::<9, 19, 26>($arg),
+            10 => $f::<10, 21, 27>($arg),
+            11 => $f::<11, 23, 28>($arg),
+            12 => $f::<12, 25, 29>($arg),
+            13 => $f::<13, 27, 30>($arg),
+            14 => $f::<14, 29, 31>($arg),
+            15 => $f::<15, 31, 32>($arg),
+            16 => $f::<16, 33, 33>($arg),
+            17 => $f::<17, 35, 34>($arg),
+            18 => $f::<18, 37, 35>($arg),
+            19 => $f::<19, 39, 36>($arg),
+            20 => $f::<20, 41, 37>($arg),
+            21 => $f::<21, 43, 38>($arg),
+            22 => $f::<22, 45, 39>($arg),
+            23 => $f::<23, 47, 40>($arg),
+            24 => $f::<24, 49, 41>($arg),
+            25 => $f::<25, 51, 42>($arg),
+            26 => $f::<26, 53, 43>($arg),
+            27 => $f::<27, 55, 44>($arg),
+            28 => $f::<28, 57, 45>($arg),
+            29 => $f::<29, 59, 46>($arg),
+            30 => $f::<30, 61, 47>($arg),
+            31 => $f::<31, 63, 48>($arg),
+            32 => $f::<32, 65, 49>($arg),
             other => unreachable!("counter width {other} passed validation"),
         }
     };
 }
 
-struct Driven<const N: usize> {
-    uut: EncspeedCore<N>,
+struct Driven<const N: usize, const P: usize, const S: usize> {
+    uut: EncspeedCore<N, P, S>,
     vcd: Option<VCDProbe<Box<dyn Write>>>,
     period_ps: u64,
     cycle: u64,
 }
 
-impl<const N: usize> Driven<N> {
+impl<const N: usize, const P: usize, const S: usize> Driven<N, P, S> {
     fn settle(&mut self) {
         assert!(simulate(&mut self.uut, 100), "design did not settle");
     }
@@ -91,12 +92,13 @@ impl<const N: usize> Driven<N> {
     }
 }
 
-impl<const N: usize> CoreSim for Driven<N> {
+impl<const N: usize, const P: usize, const S: usize> CoreSim for Driven<N, P, S> {
     fn step(&mut self, inp: &CoreInputs) -> CoreOutputs {
         assert!(
-            inp.cfg_dt < (1u64 << N),
-            "cfg_dt = {} does not fit {N} bits",
-            inp.cfg_dt
+            inp.cfg_dt < (1u64 << N) && inp.cfg_timeout < (1u64 << N),
+            "cfg_dt = {} or cfg_timeout = {} does not fit {N} bits",
+            inp.cfg_dt,
+            inp.cfg_timeout
         );
         let u = &mut self.uut;
         u.reset.next = inp.reset;
@@ -104,6 +106,11 @@ impl<const N: usize> CoreSim for Driven<N> {
         u.enc_b.next = inp.enc_b;
         u.enc_z.next = inp.enc_z;
         u.cfg_dt.next = inp.cfg_dt.into();
+        u.cfg_timeout.next = inp.cfg_timeout.into();
+        u.cfg_filter.next = inp.cfg_filter.into();
+        u.cfg_mode.next = u64::from(inp.cfg_mode).into();
+        u.cfg_z_mode.next = u64::from(inp.cfg_z_mode).into();
+        u.clear_faults.next = inp.clear_faults;
         u.clock.next = Clock { clk: false };
         self.settle();
         let t0 = self.cycle * self.period_ps;
@@ -113,12 +120,32 @@ impl<const N: usize> CoreSim for Driven<N> {
         self.cycle += 1;
         self.dump(self.cycle * self.period_ps);
         let u = &self.uut;
+        let speed = |b: Bits<S>| signed(b.to_u64(), S);
         CoreOutputs {
+            position: u.position.val().to_u64(),
+            z_latch: u.z_latch.val().to_u64(),
+            index: u.index.val(),
+            direction: u.direction.val(),
             nep: u.nep.val().to_u64(),
             ndt: u.ndt.val().to_u64(),
             update: u.update.val(),
+            speed_n1: speed(u.speed_n1.val()),
+            speed_n2: speed(u.speed_n2.val()),
+            speed_n3: speed(u.speed_n3.val()),
+            speed_strobe: u.speed_strobe.val(),
+            speed_pc: speed(u.speed_pc.val()),
+            speed_et: speed(u.speed_et.val()),
+            speed_mt: speed(u.speed_mt.val()),
+            baseline_strobe: u.baseline_strobe.val(),
+            valid: u.valid.val(),
             stalled: u.stalled.val(),
+            fault_illegal: u.fault_illegal.val(),
+            fault_overspeed: u.fault_overspeed.val(),
+            fault_revolution: u.fault_revolution.val(),
             cfg_error: u.cfg_error.val(),
+            glitch_count: u.glitch_count.val().to_u64(),
+            illegal_count: u.illegal_count.val().to_u64(),
+            rev_error_count: u.rev_error_count.val().to_u64(),
         }
     }
 
@@ -143,8 +170,14 @@ impl<const N: usize> CoreSim for Driven<N> {
     }
 }
 
-fn driven<const N: usize>(p: &Params) -> Box<dyn CoreSim> {
-    let mut uut = EncspeedCore::<N>::new(p);
+/// The two's complement value of the low `bits` bits of `raw`.
+pub fn signed(raw: u64, bits: usize) -> i64 {
+    let sh = 64 - bits as u32;
+    ((raw << sh) as i64) >> sh
+}
+
+fn driven<const N: usize, const P: usize, const S: usize>(p: &Params) -> Box<dyn CoreSim> {
+    let mut uut = EncspeedCore::<N, P, S>::new(p);
     uut.connect_all();
     let mut d = Driven {
         uut,

@@ -1,30 +1,42 @@
-//! Start-up sequencer: counts the first clock edges after reset.
+//! Start-up hold of the quadrature front end.
 //!
-//! After reset the synchroniser and the edge detector hold cleared values, not samples of
-//! the encoder. The sequencer holds the Table 1 engine in reset for the first
-//! [`CORE_LATENCY_CYCLES`](golden::params::CORE_LATENCY_CYCLES) = 2 edges (so that the ts/dt
-//! time base starts in step with the first real sample: the core is then exactly Table 1
-//! delayed by 2 cycles) and masks the edge detector for one edge more (so that a channel
-//! already high at reset is not taken for a pulse).
+//! After reset the synchronisers and the glitch filters hold cleared (low) values, not
+//! samples of the encoder: a filter passes a channel that is already high only after
+//! max(`cfg_filter`, 1) edges of real samples, which the decoder would take for a
+//! transition. This block holds the decoder and the position counter in reset (`hold`)
+//! while fewer than 2 + max(`cfg_filter`, 1) edges have passed since reset: 2 for the
+//! synchronisers, then the filter's delay. The first sample the decoder takes is then a
+//! filtered sample of the real channels (the golden rule is in `golden::core`).
+//!
+//! Registers: a 2-bit count of the synchroniser edges (saturating at 2) and a 16-bit count
+//! of the edges after them (saturating at 2^16 − 1, the longest filter), so `hold` falls
+//! for good once the filter has settled, whatever `cfg_filter` later becomes.
 
+use golden::params::FILTER_BITS;
 use rust_hdl::prelude::*;
 
-/// Saturating count of clock edges since reset.
+const FB: usize = FILTER_BITS as usize;
+
+/// Start-up hold of the front end.
 #[derive(LogicBlock)]
 pub struct Startup {
     /// Clock of the core.
     pub clock: Signal<In, Clock>,
     /// Synchronous active-high reset.
     pub reset: Signal<In, Bit>,
-    /// High once the Table 1 engine may run (2 or more edges since reset).
-    pub engine_run: Signal<Out, Bit>,
-    /// High once the edge detector compares two real samples (3 or more edges since reset).
-    pub edge_enable: Signal<Out, Bit>,
-    edges_seen: DFF<Bits<2>>,
-    zero: Constant<Bits<2>>,
-    one: Constant<Bits<2>>,
+    /// Glitch filter length L, clock cycles (0: off).
+    pub cfg_filter: Signal<In, Bits<FB>>,
+    /// Fewer than 2 + max(L, 1) edges since reset.
+    pub hold: Signal<Out, Bit>,
+    sync_edges: DFF<Bits<2>>,
+    settle_edges: DFF<Bits<FB>>,
+    filter_delay: Signal<Local, Bits<FB>>,
     two: Constant<Bits<2>>,
-    three: Constant<Bits<2>>,
+    sync_one: Constant<Bits<2>>,
+    zero: Constant<Bits<FB>>,
+    one: Constant<Bits<FB>>,
+    max: Constant<Bits<FB>>,
+    sync_zero: Constant<Bits<2>>,
 }
 
 impl Default for Startup {
@@ -32,13 +44,17 @@ impl Default for Startup {
         Self {
             clock: Default::default(),
             reset: Default::default(),
-            engine_run: Default::default(),
-            edge_enable: Default::default(),
-            edges_seen: Default::default(),
+            cfg_filter: Default::default(),
+            hold: Default::default(),
+            sync_edges: Default::default(),
+            settle_edges: Default::default(),
+            filter_delay: Default::default(),
+            two: Constant::new(2.into()),
+            sync_one: Constant::new(1.into()),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
-            two: Constant::new(2.into()),
-            three: Constant::new(3.into()),
+            max: Constant::new(((1u64 << FB) - 1).into()),
+            sync_zero: Constant::new(0.into()),
         }
     }
 }
@@ -46,15 +62,23 @@ impl Default for Startup {
 impl Logic for Startup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, edges_seen);
-        if self.edges_seen.q.val() != self.three.val() {
-            self.edges_seen.d.next = self.edges_seen.q.val() + self.one.val();
+        dff_setup!(self, clock, sync_edges, settle_edges);
+        // max(L, 1): a filter of 0 or 1 cycles delays a level by one edge.
+        self.filter_delay.next = self.cfg_filter.val();
+        if self.cfg_filter.val() == self.zero.val() {
+            self.filter_delay.next = self.one.val();
+        }
+        if self.sync_edges.q.val() != self.two.val() {
+            self.sync_edges.d.next = self.sync_edges.q.val() + self.sync_one.val();
+        } else if self.settle_edges.q.val() != self.max.val() {
+            self.settle_edges.d.next = self.settle_edges.q.val() + self.one.val();
         }
         if self.reset.val() {
-            self.edges_seen.d.next = self.zero.val();
+            self.sync_edges.d.next = self.sync_zero.val();
+            self.settle_edges.d.next = self.zero.val();
         }
-        self.engine_run.next = self.edges_seen.q.val() >= self.two.val();
-        self.edge_enable.next = self.edges_seen.q.val() == self.three.val();
+        self.hold.next = (self.sync_edges.q.val() != self.two.val())
+            | (self.settle_edges.q.val() < self.filter_delay.val());
     }
 }
 
@@ -62,30 +86,34 @@ impl Logic for Startup {
 mod tests {
     use super::*;
 
-    #[test]
-    fn runs_the_engine_after_two_edges_and_enables_edges_after_three() {
+    /// `hold` after each edge k = 1, 2, … following a reset edge, for filter length `l`.
+    fn holds(l: u64, edges: usize) -> Vec<bool> {
         let mut uut = Startup::default();
         uut.connect_all();
-        // Edge 0 with reset, then edges 1, 2, 3, 4 without: (engine_run, edge_enable)
-        // after each edge, by hand.
-        let expect = [
-            (false, false),
-            (false, false),
-            (true, false),
-            (true, true),
-            (true, true),
-        ];
-        for (k, e) in expect.iter().enumerate() {
+        let mut out = vec![];
+        for k in 0..=edges {
             uut.reset.next = k == 0;
+            uut.cfg_filter.next = l.into();
             uut.clock.next = Clock { clk: false };
             assert!(simulate(&mut uut, 10));
             uut.clock.next = Clock { clk: true };
             assert!(simulate(&mut uut, 10));
-            assert_eq!(
-                (uut.engine_run.val(), uut.edge_enable.val()),
-                *e,
-                "after edge {k}"
-            );
+            if k > 0 {
+                out.push(uut.hold.val());
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn holds_for_two_plus_the_filter_delay() {
+        // By hand: after edge k, k edges have passed; hold while k < 2 + max(L, 1).
+        for l in [0u64, 1, 2, 5] {
+            let h = holds(l, 12);
+            let n = (2 + l.max(1)) as usize;
+            for (k, &held) in h.iter().enumerate() {
+                assert_eq!(held, k + 1 < n, "L = {l}, edge {}", k + 1);
+            }
         }
     }
 

@@ -31,10 +31,13 @@ pub struct SyncEstimator<const N: usize> {
     pub ndt: Signal<Out, Bits<N>>,
     /// High for the cycle after a clock edge that wrote Nep1 or Ndt1.
     pub update: Signal<Out, Bit>,
+    /// Ndt1 has been measured (a restart) since reset: the estimator is primed.
+    pub primed: Signal<Out, Bit>,
     pub(crate) cep: DFF<Bits<N>>,
     nep1: DFF<Bits<N>>,
     ndt1: DFF<Bits<N>>,
     update_reg: DFF<Bit>,
+    primed_reg: DFF<Bit>,
     nep_write: Signal<Local, Bit>,
     zero: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
@@ -53,10 +56,12 @@ impl<const N: usize> Default for SyncEstimator<N> {
             nep: Default::default(),
             ndt: Default::default(),
             update: Default::default(),
+            primed: Default::default(),
             cep: Default::default(),
             nep1: Default::default(),
             ndt1: Default::default(),
             update_reg: Default::default(),
+            primed_reg: Default::default(),
             nep_write: Default::default(),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
@@ -68,7 +73,7 @@ impl<const N: usize> Default for SyncEstimator<N> {
 impl<const N: usize> Logic for SyncEstimator<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, cep, nep1, ndt1, update_reg);
+        dff_setup!(self, clock, cep, nep1, ndt1, update_reg, primed_reg);
         self.nep_write.next = self.tick.val() & (self.cep.q.val() != self.zero.val());
         if self.nep_write.val() {
             self.nep1.d.next = self.cep.q.val();
@@ -84,7 +89,9 @@ impl<const N: usize> Logic for SyncEstimator<N> {
             self.cep.d.next = self.zero.val();
         }
         self.update_reg.d.next = self.nep_write.val() | self.restart.val();
+        self.primed_reg.d.next = self.primed_reg.q.val() | self.restart.val();
         if self.reset.val() {
+            self.primed_reg.d.next = false;
             self.cep.d.next = self.zero.val();
             self.nep1.d.next = self.zero.val();
             self.ndt1.d.next = self.one.val();
@@ -93,6 +100,7 @@ impl<const N: usize> Logic for SyncEstimator<N> {
         self.nep.next = self.nep1.q.val();
         self.ndt.next = self.ndt1.q.val();
         self.update.next = self.update_reg.q.val();
+        self.primed.next = self.primed_reg.q.val();
     }
 }
 

@@ -30,6 +30,8 @@ pub struct Timebase<const N: usize> {
     pub lep: Signal<In, Bit>,
     /// dt in clock cycles.
     pub dt: Signal<In, Bits<N>>,
+    /// Zero-speed timeout in dt intervals (compared with Cdt).
+    pub timeout: Signal<In, Bits<N>>,
     /// High in the cycle in which `clock == dt`.
     pub tick: Signal<Out, Bit>,
     /// High in the cycle of a pulse that follows at least one tick (the dt base restarts).
@@ -48,22 +50,16 @@ pub struct Timebase<const N: usize> {
     one: Constant<Bits<N>>,
     min_dt: Constant<Bits<N>>,
     saturated: Constant<Bits<N>>,
-    timeout_dt: Constant<Bits<N>>,
 }
 
-impl<const N: usize> Timebase<N> {
-    /// A time base with N-bit counters; `timeout_dt` in dt intervals (validated by
-    /// [`golden::params::Params`] to be below the saturation value).
-    pub fn new(timeout_dt: u64) -> Self {
-        assert!(
-            timeout_dt < (1u64 << N) - 1,
-            "timeout does not fit {N} bits"
-        );
+impl<const N: usize> Default for Timebase<N> {
+    fn default() -> Self {
         Self {
             clock: Default::default(),
             reset: Default::default(),
             lep: Default::default(),
             dt: Default::default(),
+            timeout: Default::default(),
             tick: Default::default(),
             restart: Default::default(),
             cdt: Default::default(),
@@ -78,7 +74,6 @@ impl<const N: usize> Timebase<N> {
             one: Constant::new(1.into()),
             min_dt: Constant::new(golden::params::MIN_DT_CYCLES.into()),
             saturated: Constant::new(((1u64 << N) - 1).into()),
-            timeout_dt: Constant::new(timeout_dt.into()),
         }
     }
 }
@@ -118,7 +113,7 @@ impl<const N: usize> Logic for Timebase<N> {
         self.tick.next = self.tick_now.val();
         self.restart.next = self.restart_now.val();
         self.cdt.next = self.cdt_count.q.val();
-        self.stalled.next = self.cdt_count.q.val() >= self.timeout_dt.val();
+        self.stalled.next = self.cdt_count.q.val() >= self.timeout.val();
     }
 }
 
@@ -128,7 +123,7 @@ mod tests {
 
     #[test]
     fn ticks_every_dt_and_restarts_on_a_pulse_after_a_tick() {
-        let mut uut = Timebase::<8>::new(100);
+        let mut uut = Timebase::<8>::default();
         uut.connect_all();
         let mut ticks = vec![];
         let mut restarts = vec![];
@@ -158,7 +153,7 @@ mod tests {
 
     #[test]
     fn synthesises() {
-        let mut uut = Timebase::<8>::new(100);
+        let mut uut = Timebase::<8>::default();
         uut.connect_all();
         yosys_validate("encspeed_timebase", &generate_verilog(&uut)).unwrap();
     }

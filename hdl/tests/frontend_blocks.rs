@@ -251,6 +251,7 @@ fn hdl_filter(stim: &[GlitchFilterInputs]) -> Vec<GlitchFilterOutputs> {
             GlitchFilterOutputs {
                 level_out: uut.level_out.val(),
                 glitches: uut.glitches.val().to_u64(),
+                rejected: uut.rejected.val(),
             }
         })
         .collect()
@@ -297,6 +298,7 @@ fn hdl_counter(stim: &[CounterInputs]) -> Vec<CounterOutputs> {
                 index: uut.index.val(),
                 rev_error: uut.rev_error.val(),
                 rev_error_count: uut.rev_error_count.val().to_u64(),
+                rev_fault: uut.rev_fault.val(),
             }
         })
         .collect()
@@ -491,7 +493,7 @@ fn glitch_filter_verilog_equals_golden_in_icarus() {
     let stim: Vec<GlitchFilterInputs> = icarus_cases().flat_map(filter_stimulus).collect();
     let want: Vec<Vec<u64>> = golden_filter(&stim)
         .iter()
-        .map(|o| vec![u64::from(o.level_out), o.glitches])
+        .map(|o| vec![u64::from(o.level_out), o.glitches, u64::from(o.rejected)])
         .collect();
     let vectors: Vec<Vec<u64>> = stim
         .iter()
@@ -501,7 +503,7 @@ fn glitch_filter_verilog_equals_golden_in_icarus() {
         "glitch_filter",
         &glitch_filter_verilog::<FILTER_BITS, GLITCH_BITS>("glitch_filter"),
         &[("reset", 1), ("level_in", 1), ("cfg_filter", FILTER_BITS)],
-        &[("level_out", 1), ("glitches", GLITCH_BITS)],
+        &[("level_out", 1), ("glitches", GLITCH_BITS), ("rejected", 1)],
         &vectors,
     );
     compare_rows("glitch_filter", &got, &want);
@@ -565,6 +567,7 @@ fn position_counter_verilog_equals_golden_in_icarus() {
                 u64::from(o.index),
                 u64::from(o.rev_error),
                 o.rev_error_count,
+                u64::from(o.rev_fault),
             ]
         })
         .collect();
@@ -598,6 +601,7 @@ fn position_counter_verilog_equals_golden_in_icarus() {
             ("index", 1),
             ("rev_error", 1),
             ("rev_error_count", REV_ERROR_BITS),
+            ("rev_fault", 1),
         ],
         &vectors,
     );

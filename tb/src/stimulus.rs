@@ -27,6 +27,7 @@ pub fn from_profile(
             enc_b: s.b,
             enc_z: s.z,
             cfg_dt,
+            ..CoreInputs::default()
         })
         .collect())
 }
@@ -45,6 +46,7 @@ pub fn square_wave(period: u64, phase: u64, cycles: usize, cfg_dt: u64) -> Vec<C
                 enc_b: (m + period - period / 4) % period < period / 2,
                 enc_z: false,
                 cfg_dt,
+                ..CoreInputs::default()
             }
         })
         .collect()

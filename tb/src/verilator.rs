@@ -17,6 +17,29 @@ pub const WAIVERS: &str = include_str!("../verilator/waivers.vlt");
 /// A compiled simulator of one emitted `encspeed_core`.
 pub struct Verilated {
     exe: PathBuf,
+    speed_bits: u32,
+}
+
+/// The width of the speed ports, read from the header the generator writes into every
+/// emitted file (`output speed_n3[S-1:0]: …`).
+fn speed_bits_of(verilog: &str) -> Result<u32, String> {
+    let tag = "output speed_n3[";
+    let at = verilog
+        .find(tag)
+        .ok_or("the Verilog has no encspeed port header (output speed_n3[..])")?;
+    let rest = &verilog[at + tag.len()..];
+    let msb: u32 = rest
+        .split(':')
+        .next()
+        .and_then(|x| x.parse().ok())
+        .ok_or("bad speed_n3 width in the header")?;
+    Ok(msb + 1)
+}
+
+/// The two's complement value of the low `bits` bits of `raw`.
+fn signed(raw: u64, bits: u32) -> i64 {
+    let sh = 64 - bits;
+    ((raw << sh) as i64) >> sh
 }
 
 fn fnv1a(parts: &[&str]) -> u64 {
@@ -58,12 +81,13 @@ pub fn lint(verilog: &str) -> Result<String, String> {
 impl Verilated {
     /// Compile `verilog` (top module `encspeed_core`) with the harness, or reuse the build.
     pub fn build(verilog: &str) -> Result<Verilated, String> {
+        let speed_bits = speed_bits_of(verilog)?;
         let hash = fnv1a(&[verilog, HARNESS, WAIVERS]);
         let root = crate::target_dir().join("verilator");
         let done = root.join(format!("{hash:016x}"));
         let exe = done.join("obj/Vencspeed_core");
         if exe.exists() {
-            return Ok(Verilated { exe });
+            return Ok(Verilated { exe, speed_bits });
         }
         // Build in a directory private to this process and this call (tests run in
         // parallel threads of one process) and rename it into place, so that no test ever
@@ -89,7 +113,7 @@ impl Verilated {
             // Another process won the race; its build is identical.
             let _ = std::fs::remove_dir_all(&tmp);
         }
-        Ok(Verilated { exe })
+        Ok(Verilated { exe, speed_bits })
     }
 
     /// Path of the compiled harness.
@@ -119,8 +143,17 @@ impl Verilated {
             .iter()
             .map(|i| {
                 format!(
-                    "{} {} {} {} {}\n",
-                    i.reset as u8, i.enc_a as u8, i.enc_b as u8, i.enc_z as u8, i.cfg_dt
+                    "{} {} {} {} {} {} {} {} {} {}\n",
+                    i.reset as u8,
+                    i.enc_a as u8,
+                    i.enc_b as u8,
+                    i.enc_z as u8,
+                    i.cfg_dt,
+                    i.cfg_timeout,
+                    i.cfg_filter,
+                    i.cfg_mode,
+                    i.cfg_z_mode,
+                    i.clear_faults as u8
                 )
             })
             .collect();
@@ -136,15 +169,35 @@ impl Verilated {
                         .map_err(|e| format!("bad harness output {line:?}: {e}"))
                 })
                 .collect::<Result<_, _>>()?;
-            if f.len() != 5 {
+            if f.len() != 24 {
                 return Err(format!("bad harness output {line:?}"));
             }
+            let sp = |raw: u64| signed(raw, self.speed_bits);
             outs.push(CoreOutputs {
-                nep: f[0],
-                ndt: f[1],
-                update: f[2] != 0,
-                stalled: f[3] != 0,
-                cfg_error: f[4] != 0,
+                position: f[0],
+                z_latch: f[1],
+                index: f[2] != 0,
+                direction: f[3] != 0,
+                nep: f[4],
+                ndt: f[5],
+                update: f[6] != 0,
+                speed_n1: sp(f[7]),
+                speed_n2: sp(f[8]),
+                speed_n3: sp(f[9]),
+                speed_strobe: f[10] != 0,
+                speed_pc: sp(f[11]),
+                speed_et: sp(f[12]),
+                speed_mt: sp(f[13]),
+                baseline_strobe: f[14] != 0,
+                valid: f[15] != 0,
+                stalled: f[16] != 0,
+                fault_illegal: f[17] != 0,
+                fault_overspeed: f[18] != 0,
+                fault_revolution: f[19] != 0,
+                cfg_error: f[20] != 0,
+                glitch_count: f[21],
+                illegal_count: f[22],
+                rev_error_count: f[23],
             });
         }
         writer

@@ -1,14 +1,17 @@
 // Verilator harness for the emitted encspeed_core.v.
 //
 // Stream mode (default): reads one line per clock cycle on stdin,
-//   "reset enc_a enc_b enc_z cfg_dt"
-// applies the inputs, gives one rising clock edge, and prints the outputs after the edge,
-//   "nep ndt update stalled cfg_error"
-// exactly as golden::bittrue::CoreModel::step does, so the Rust side compares line by line.
+//   "reset enc_a enc_b enc_z cfg_dt cfg_timeout cfg_filter cfg_mode cfg_z_mode clear_faults"
+// applies the inputs, gives one rising clock edge, and prints the outputs after the edge
+// (speeds as raw unsigned port values; the Rust side sign-extends them),
+//   "position z_latch index direction nep ndt update speed_n1 speed_n2 speed_n3
+//    speed_strobe speed_pc speed_et speed_mt baseline_strobe valid stalled fault_illegal
+//    fault_overspeed fault_revolution cfg_error glitch_count illegal_count rev_error_count"
+// exactly as golden::core::CoreModel::step does, so the Rust side compares line by line.
 //
-// Bench mode: "--bench CYCLES PERIOD DT" drives a square wave on enc_a of PERIOD cycles with
-// cfg_dt = DT for CYCLES cycles and prints "cycles seconds cycles_per_second" (a benchmark,
-// not a test).
+// Bench mode: "--bench CYCLES PERIOD DT" drives x1 quadrature (A, and B a quarter period
+// behind) of PERIOD cycles with cfg_dt = DT for CYCLES cycles and prints "cycles seconds
+// cycles_per_second checksum" (a benchmark, not a test).
 //
 // Optional "--vcd PATH" (stream mode) writes a VCD of every signal of the emitted Verilog.
 #include "Vencspeed_core.h"
@@ -57,12 +60,14 @@ int main(int argc, char** argv) {
         unsigned long long checksum = 0;
         auto t0 = std::chrono::steady_clock::now();
         for (unsigned long long k = 0; k < bench_cycles; ++k) {
-            top.enc_a = (k % bench_period) < bench_period / 2;
+            unsigned long long m = k % bench_period;
+            top.enc_a = m < bench_period / 2;
+            top.enc_b = ((m + bench_period - bench_period / 4) % bench_period) < bench_period / 2;
             top.clock = 0;
             top.eval();
             top.clock = 1;
             top.eval();
-            checksum += top.update;
+            checksum += top.speed_strobe;
         }
         double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         printf("%llu %.6f %.0f %llu\n", bench_cycles, s, bench_cycles / s, checksum);
@@ -87,9 +92,10 @@ int main(int argc, char** argv) {
     char line[256];
     unsigned long long cycle = 0;
     while (fgets(line, sizeof line, stdin)) {
-        unsigned r, a, b, z;
-        unsigned long long dt;
-        if (sscanf(line, "%u %u %u %u %llu", &r, &a, &b, &z, &dt) != 5) {
+        unsigned r, a, b, z, filter, mode, zmode, clear;
+        unsigned long long dt, timeout;
+        if (sscanf(line, "%u %u %u %u %llu %llu %u %u %u %u", &r, &a, &b, &z, &dt, &timeout,
+                   &filter, &mode, &zmode, &clear) != 10) {
             fprintf(stderr, "bad input line %llu: %s", cycle, line);
             return 2;
         }
@@ -98,6 +104,11 @@ int main(int argc, char** argv) {
         top.enc_b = b;
         top.enc_z = z;
         top.cfg_dt = dt;
+        top.cfg_timeout = timeout;
+        top.cfg_filter = filter;
+        top.cfg_mode = mode;
+        top.cfg_z_mode = zmode;
+        top.clear_faults = clear;
         top.clock = 0;
         top.eval();
 #if VM_TRACE
@@ -108,8 +119,16 @@ int main(int argc, char** argv) {
 #if VM_TRACE
         if (tfp) tfp->dump((uint64_t)(cycle * 10 + 10));
 #endif
-        printf("%llu %llu %u %u %u\n", (unsigned long long)top.nep, (unsigned long long)top.ndt,
-               (unsigned)top.update, (unsigned)top.stalled, (unsigned)top.cfg_error);
+        typedef unsigned long long u;
+        printf("%llu %llu %u %u %llu %llu %u %llu %llu %llu %u %llu %llu %llu %u %u %u %u %u %u %u "
+               "%u %u %u\n",
+               (u)top.position, (u)top.z_latch, (unsigned)top.index, (unsigned)top.direction,
+               (u)top.nep, (u)top.ndt, (unsigned)top.update, (u)top.speed_n1, (u)top.speed_n2,
+               (u)top.speed_n3, (unsigned)top.speed_strobe, (u)top.speed_pc, (u)top.speed_et,
+               (u)top.speed_mt, (unsigned)top.baseline_strobe, (unsigned)top.valid,
+               (unsigned)top.stalled, (unsigned)top.fault_illegal, (unsigned)top.fault_overspeed,
+               (unsigned)top.fault_revolution, (unsigned)top.cfg_error, (unsigned)top.glitch_count,
+               (unsigned)top.illegal_count, (unsigned)top.rev_error_count);
         ++cycle;
     }
 #if VM_TRACE

@@ -1,0 +1,469 @@
+//! Bit-true model of the whole `encspeed_core` (layer 2): the hardware's registers, clock
+//! edge for clock edge, built from the bit-true models of its blocks.
+//!
+//! ```text
+//! enc_a ─ sync ─ GlitchFilter ─┐
+//! enc_b ─ sync ─ GlitchFilter ─┴─ QuadratureDecoder ─ step, forward ─┬─ PositionCounter ─ position, z_latch, index
+//! enc_z ─ sync ─ GlitchFilter ──────────────────────────────────────┘│
+//!                                     ┌────────────────────────────────┤
+//!                                     ├─ Table1 (Rairán) ─ nep, ndt ─ SpeedCalc ─ ModeScale ─ speed_n1..n3
+//!                                     └─ PcCounter, EtTimer, MtCounter ─ BaselineSpeeds ─ speed_pc, speed_et, speed_mt
+//! ```
+//!
+//! Conventions as in [`crate::frontend`]: one [`CoreModel::step`] per rising clock edge with
+//! the inputs applied during the cycle before it; every register is updated from the values
+//! before the edge; `step` returns the outputs after the edge. Every output is a register
+//! or a function of registers only.
+//!
+//! # Rules that are the core's own (the blocks' rules are in their modules)
+//! - **Start-up.** The synchronisers and filters leave reset low. The decoder and the
+//!   position counter are held in reset while fewer than 2 + max(`cfg_filter`, 1) edges have
+//!   passed since reset (`fill`), so that the first sample they take is a filtered sample of
+//!   the real channels: a channel already high at reset is not a step.
+//! - **Rairán's pulse** is a decoder step (x1, x2 or x4), of either direction. The estimator
+//!   measures one direction at a time: a **reversal** (a step whose direction differs from
+//!   the previous step's) resets Table 1, the speed calculator and the speed registers
+//!   (speeds 0, `valid` low) and is not itself counted. The estimator is **primed** by its
+//!   first restart after reset or a reversal (a pulse after at least one dt tick, which
+//!   writes Ndt1); only then are its updates sent to the speed calculator. So no speed ever
+//!   mixes the two directions, and none is computed from a Ndt1 that was not measured.
+//! - **Mode scaling.** Table 1 counts decoder steps, 2^s per line (s = 0, 1, 2 in x1, x2,
+//!   x4). The speed calculator gives n in steps per dt with F fractional bits; the speed
+//!   registers hold n / 2^s in units of ω_lim (one line per dt): the magnitude rounded to
+//!   nearest, ties away from zero, then the sign. Error: ½ LSB in x1, ½ + ½/2^s LSB in x2
+//!   and x4 ([`mode_scale_error_lsb`]).
+//! - **Configuration.** `cfg_dt` = 0 means the generation default dt, 1 is used as 2 and
+//!   flags `cfg_error`; `cfg_timeout` = 0 means the generation default timeout; `cfg_mode` 3
+//!   decodes as x4 and flags `cfg_error`. `cfg_dt` and `cfg_timeout` are registered (a change
+//!   acts one edge later); `cfg_filter`, `cfg_mode` and `cfg_z_mode` act at once. Change
+//!   `cfg_mode` only while `reset` is high: a measurement in progress would be scaled
+//!   with the new mode.
+//! - **Faults.** `fault_illegal` (both channels changed between two samples),
+//!   `fault_overspeed` (the A or B filter rejected a level shorter than `cfg_filter`
+//!   cycles: a glitch, or edges closer than the filter passes) and `fault_revolution` (a
+//!   revolution of one direction between two index edges had the wrong count) are sticky:
+//!   set one edge after the event, cleared by reset or by `clear_faults` (an event in the
+//!   same cycle wins). `glitch_count` counts the rejected pulses of A, B and Z,
+//!   saturating.
+//! - **valid** = a speed has been computed since reset or the last reversal, the shaft has
+//!   moved within the timeout (`stalled` low) and the configuration is legal. Sticky faults
+//!   do not clear it; they are reported beside it.
+
+use crate::baseline_speeds::{
+    BaselineFormat, BaselineRequest, BaselineSpeedsInputs, BaselineSpeedsModel,
+};
+use crate::bittrue::Table1;
+use crate::et_timer::{EtInputs, EtTimer};
+use crate::mt_counter::{MtCounter, MtInputs};
+use crate::pc_counter::{PcCounter, PcInputs};
+use crate::frontend::{
+    CounterInputs, DecoderInputs, GlitchFilter, GlitchFilterInputs, PositionCounter,
+    QuadratureDecoder, MODE_INVALID, MODE_X1, MODE_X2,
+};
+use crate::params::{
+    max_value, Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS,
+    SPEED_FRAC_BITS,
+};
+use crate::speed_calc::{SpeedCalcInputs, SpeedCalcModel, SpeedFormat, Speeds};
+
+/// Edges after reset before the synchronisers hold real samples.
+pub const SYNC_CYCLES: u64 = 2;
+
+/// Inputs of `encspeed_core` during one clock cycle (sampled at its rising edge).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CoreInputs {
+    /// Synchronous active-high reset.
+    pub reset: bool,
+    /// Encoder channel A (asynchronous).
+    pub enc_a: bool,
+    /// Encoder channel B (asynchronous).
+    pub enc_b: bool,
+    /// Encoder index Z (asynchronous).
+    pub enc_z: bool,
+    /// dt in clock cycles (0: the generation default; 1: used as 2, `cfg_error`).
+    pub cfg_dt: u64,
+    /// Zero-speed timeout in dt intervals (0: the generation default).
+    pub cfg_timeout: u64,
+    /// Glitch filter length in clock cycles (0: off).
+    pub cfg_filter: u64,
+    /// Decoding: 0 = x1, 1 = x2, 2 = x4 (3: x4 and `cfg_error`).
+    pub cfg_mode: u8,
+    /// Index: 0 = ignore, 1 = reset the position, 2 = latch it, 3 = latch then reset.
+    pub cfg_z_mode: u8,
+    /// Clear the sticky fault flags.
+    pub clear_faults: bool,
+}
+
+/// Outputs of `encspeed_core` after a rising clock edge. Speeds are values in units of
+/// 2^−F ω_lim (F = [`SPEED_FRAC_BITS`]); the ports carry them as two's complement.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CoreOutputs {
+    /// Position in steps, 0 .. lines·2^s.
+    pub position: u64,
+    /// Position latched at the last index edge.
+    pub z_latch: u64,
+    /// One cycle: an index edge was processed.
+    pub index: bool,
+    /// Direction of the last step (true = forward).
+    pub direction: bool,
+    /// Nep1 of Table 1 (decoder steps).
+    pub nep: u64,
+    /// Ndt1 of Table 1.
+    pub ndt: u64,
+    /// One cycle: Table 1 wrote Nep1 or Ndt1.
+    pub update: bool,
+    /// n1 = Nep/Ndt, ω_lim.
+    pub speed_n1: i64,
+    /// n2, eq. (6), ω_lim.
+    pub speed_n2: i64,
+    /// n3, eq. (11), ω_lim: the estimate to use.
+    pub speed_n3: i64,
+    /// One cycle: `speed_n1..3` were just written.
+    pub speed_strobe: bool,
+    /// Fixed-time (PC) speed of the last window, ω_lim.
+    pub speed_pc: i64,
+    /// Fixed-space (ET) speed at the last window end, ω_lim.
+    pub speed_et: i64,
+    /// M/T speed of the last window, ω_lim.
+    pub speed_mt: i64,
+    /// One cycle: `speed_pc`, `speed_et`, `speed_mt` were just written.
+    pub baseline_strobe: bool,
+    /// `speed_n3` holds a measurement of the current direction, not stalled, legal
+    /// configuration.
+    pub valid: bool,
+    /// No step for the zero-speed timeout.
+    pub stalled: bool,
+    /// Sticky: an illegal transition.
+    pub fault_illegal: bool,
+    /// Sticky: the A or B filter rejected a pulse.
+    pub fault_overspeed: bool,
+    /// Sticky: a revolution had the wrong count.
+    pub fault_revolution: bool,
+    /// `cfg_dt` = 1 or `cfg_mode` = 3 at the last edge.
+    pub cfg_error: bool,
+    /// Pulses rejected by the A, B and Z filters (saturating).
+    pub glitch_count: u64,
+    /// Illegal transitions (saturating).
+    pub illegal_count: u64,
+    /// Revolutions with the wrong count (saturating).
+    pub rev_error_count: u64,
+}
+
+/// log2 of the steps per line for `cfg_mode` (x1: 0, x2: 1, x4 and 3: 2).
+pub fn mode_shift(cfg_mode: u8) -> u32 {
+    match cfg_mode {
+        MODE_X1 => 0,
+        MODE_X2 => 1,
+        _ => 2,
+    }
+}
+
+/// A speed in steps per dt (2^−F units) as a speed in lines per dt: the magnitude divided
+/// by 2^s, rounded to nearest with ties away from zero, then the sign.
+pub fn mode_scale(v: i64, shift: u32) -> i64 {
+    if shift == 0 {
+        return v;
+    }
+    let m = (v.unsigned_abs() + (1u64 << (shift - 1))) >> shift;
+    if v < 0 {
+        -(m as i64)
+    } else {
+        m as i64
+    }
+}
+
+/// Largest error of a scaled Rairán speed against its exact value, in LSB (2^−F ω_lim):
+/// the calculator's ½ LSB of steps per dt is ½/2^s LSB after the scaling, and the scaling
+/// rounds once more (½ LSB) when s > 0.
+pub fn mode_scale_error_lsb(shift: u32) -> f64 {
+    if shift == 0 {
+        0.5
+    } else {
+        0.5 + 0.5 / f64::from(1u32 << shift)
+    }
+}
+
+/// Bit-true model of `encspeed_core`.
+#[derive(Clone, Debug)]
+pub struct CoreModel {
+    default_dt: u64,
+    default_timeout: u64,
+    lines: u64,
+    fill: u64,
+    sync: [[bool; 2]; 3],
+    filters: [GlitchFilter; 3],
+    decoder: QuadratureDecoder,
+    position: PositionCounter,
+    have_dir: bool,
+    last_dir: bool,
+    dt_reg: u64,
+    timeout_reg: u64,
+    engine: Table1,
+    primed: bool,
+    calc: SpeedCalcModel,
+    speeds: Speeds,
+    speed_strobe: bool,
+    speed_ok: bool,
+    cfg_error: bool,
+    faults: [bool; 3],
+    glitch_count: u64,
+    pc: PcCounter,
+    et: EtTimer,
+    mt: MtCounter,
+    et_have: bool,
+    baseline: BaselineSpeedsModel,
+}
+
+/// Index of the channels in [`CoreModel`]'s arrays.
+const A: usize = 0;
+const B: usize = 1;
+const Z: usize = 2;
+
+impl CoreModel {
+    /// A core model in the state the hardware has after reset.
+    pub fn new(p: &Params) -> CoreModel {
+        let format = SpeedFormat::new(p.counter_bits(), SPEED_FRAC_BITS)
+            .expect("validated parameters give a legal speed format");
+        CoreModel {
+            default_dt: p.dt_cycles(),
+            default_timeout: p.timeout_dt(),
+            lines: u64::from(p.lines()),
+            fill: 0,
+            sync: [[false; 2]; 3],
+            filters: std::array::from_fn(|_| GlitchFilter::new(FILTER_BITS, ERROR_COUNT_BITS)),
+            decoder: QuadratureDecoder::new(ERROR_COUNT_BITS),
+            position: PositionCounter::new(POSITION_BITS, ERROR_COUNT_BITS),
+            have_dir: false,
+            last_dir: false,
+            dt_reg: p.dt_cycles(),
+            timeout_reg: p.timeout_dt(),
+            engine: Table1::new(p),
+            primed: false,
+            calc: SpeedCalcModel::new(format),
+            speeds: Speeds::default(),
+            speed_strobe: false,
+            speed_ok: false,
+            cfg_error: false,
+            faults: [false; 3],
+            glitch_count: 0,
+            pc: PcCounter::new(p.counter_bits()),
+            et: EtTimer::new(p.counter_bits()),
+            mt: MtCounter::new(p.counter_bits()),
+            et_have: false,
+            baseline: BaselineSpeedsModel::new(
+                BaselineFormat::new(p.counter_bits(), SPEED_FRAC_BITS)
+                    .expect("validated parameters give a legal baseline format"),
+            ),
+        }
+    }
+
+    /// The Table 1 registers.
+    pub fn engine(&self) -> &Table1 {
+        &self.engine
+    }
+
+    /// Edges since reset (saturating), for the start-up hold.
+    pub fn fill(&self) -> u64 {
+        self.fill
+    }
+
+    /// The estimator has been primed since reset or the last reversal.
+    pub fn primed(&self) -> bool {
+        self.primed
+    }
+
+    /// The effective dt (clock cycles) the time bases use at the next edge.
+    pub fn dt(&self) -> u64 {
+        self.dt_reg
+    }
+
+    /// The effective dt for a `cfg_dt` value.
+    fn dt_eff(&self, cfg_dt: u64) -> u64 {
+        if cfg_dt == 0 {
+            self.default_dt
+        } else {
+            cfg_dt.max(MIN_DT_CYCLES)
+        }
+    }
+
+    /// One rising clock edge with `inp` applied; returns the outputs after the edge.
+    pub fn step(&mut self, inp: CoreInputs) -> CoreOutputs {
+        assert!(inp.cfg_mode <= MODE_INVALID, "cfg_mode = {}", inp.cfg_mode);
+        let shift = mode_shift(inp.cfg_mode);
+        // Registered values before the edge.
+        let filt = self.filters.each_ref().map(|f| f.outputs());
+        let dec = self.decoder.state();
+        let pos = self.position.outputs();
+        let t1 = self.engine.outputs();
+        let calc = self.calc.outputs();
+        let pc = self.pc.outputs();
+        let et = self.et.outputs();
+        let mt = self.mt.outputs();
+
+        let front_hold = self.fill < SYNC_CYCLES + inp.cfg_filter.max(1);
+        let front_reset = inp.reset || front_hold;
+        let reversal = dec.step && self.have_dir && dec.forward != self.last_dir;
+        let engine_reset = inp.reset || reversal;
+        let restart = !engine_reset && dec.step && self.engine.state().cdt != 0;
+        let primed_before = self.primed;
+
+        for (c, f) in self.filters.iter_mut().enumerate() {
+            f.step(GlitchFilterInputs {
+                reset: inp.reset,
+                level_in: self.sync[c][1],
+                cfg_filter: inp.cfg_filter,
+            });
+        }
+        self.decoder.step(DecoderInputs {
+            reset: front_reset,
+            a: filt[A].level_out,
+            b: filt[B].level_out,
+            cfg_mode: inp.cfg_mode,
+        });
+        self.position.step(CounterInputs {
+            reset: front_reset,
+            step: dec.step,
+            forward: dec.forward,
+            z: filt[Z].level_out,
+            counts_per_rev: (self.lines << shift) & max_value(POSITION_BITS),
+            cfg_z_mode: inp.cfg_z_mode,
+        });
+        if engine_reset {
+            self.engine.reset();
+        } else {
+            self.engine.step(dec.step, self.dt_reg);
+        }
+        self.primed = !engine_reset && (self.primed || restart);
+        self.calc.step(SpeedCalcInputs {
+            reset: engine_reset,
+            start: t1.update && primed_before,
+            nep: t1.nep,
+            ndt: t1.ndt,
+            negative: !self.last_dir,
+        });
+        if engine_reset {
+            self.speeds = Speeds::default();
+            self.speed_strobe = false;
+            self.speed_ok = false;
+        } else {
+            self.speed_strobe = calc.valid;
+            if calc.valid {
+                self.speeds = Speeds {
+                    n1: mode_scale(calc.speeds.n1, shift),
+                    n2: mode_scale(calc.speeds.n2, shift),
+                    n3: mode_scale(calc.speeds.n3, shift),
+                };
+                self.speed_ok = true;
+            }
+        }
+        let (r, st, fw) = (inp.reset, dec.step, dec.forward);
+        self.pc.step(PcInputs {
+            reset: r,
+            step: st,
+            forward: fw,
+            cfg_dt: self.dt_reg,
+        });
+        self.et.step(EtInputs {
+            reset: r,
+            step: st,
+            forward: fw,
+        });
+        self.mt.step(MtInputs {
+            reset: r,
+            step: st,
+            forward: fw,
+            cfg_dt: self.dt_reg,
+        });
+        self.baseline.step(BaselineSpeedsInputs {
+            reset: inp.reset,
+            start: pc.strobe,
+            req: BaselineRequest {
+                pc_count: pc.count,
+                et_period: et.period,
+                et_negative: et.negative,
+                et_valid: (self.et_have || et.strobe) && !et.stalled,
+                mt_m: mt.m,
+                mt_t: mt.t,
+                mt_negative: mt.negative,
+                cfg_dt: self.dt_reg,
+                mode_shift: shift,
+            },
+        });
+        self.et_have = !engine_reset && (self.et_have || et.strobe);
+        let events = [
+            dec.illegal,
+            filt[A].rejected || filt[B].rejected,
+            pos.rev_fault,
+        ];
+        for (f, e) in self.faults.iter_mut().zip(events) {
+            *f = !inp.reset && ((*f && !inp.clear_faults) || e);
+        }
+        let rejected: u64 = filt.iter().map(|f| u64::from(f.rejected)).sum();
+        self.glitch_count = if inp.reset {
+            0
+        } else {
+            (self.glitch_count + rejected).min(max_value(ERROR_COUNT_BITS))
+        };
+        if inp.reset {
+            self.have_dir = false;
+            self.last_dir = false;
+        } else if dec.step {
+            self.have_dir = true;
+            self.last_dir = dec.forward;
+        }
+        self.cfg_error = inp.cfg_dt == 1 || inp.cfg_mode == MODE_INVALID;
+        self.dt_reg = self.dt_eff(inp.cfg_dt);
+        self.timeout_reg = if inp.cfg_timeout == 0 {
+            self.default_timeout
+        } else {
+            inp.cfg_timeout
+        };
+        for (c, level) in [inp.enc_a, inp.enc_b, inp.enc_z].into_iter().enumerate() {
+            self.sync[c] = if inp.reset {
+                [false; 2]
+            } else {
+                [level, self.sync[c][0]]
+            };
+        }
+        self.fill = if inp.reset {
+            0
+        } else {
+            (self.fill + 1).min(SYNC_CYCLES + max_value(FILTER_BITS))
+        };
+        self.outputs()
+    }
+
+    /// The outputs as they stand.
+    pub fn outputs(&self) -> CoreOutputs {
+        let t1 = self.engine.outputs();
+        let dec = self.decoder.state();
+        let pos = self.position.outputs();
+        let stalled = self.engine.state().cdt >= self.timeout_reg;
+        CoreOutputs {
+            position: pos.position,
+            z_latch: pos.z_latch,
+            index: pos.index,
+            direction: dec.direction,
+            nep: t1.nep,
+            ndt: t1.ndt,
+            update: t1.update,
+            speed_n1: self.speeds.n1,
+            speed_n2: self.speeds.n2,
+            speed_n3: self.speeds.n3,
+            speed_strobe: self.speed_strobe,
+            speed_pc: self.baseline.outputs().speeds.pc,
+            speed_et: self.baseline.outputs().speeds.et,
+            speed_mt: self.baseline.outputs().speeds.mt,
+            baseline_strobe: self.baseline.outputs().valid,
+            valid: self.speed_ok && !stalled && !self.cfg_error,
+            stalled,
+            fault_illegal: self.faults[0],
+            fault_overspeed: self.faults[1],
+            fault_revolution: self.faults[2],
+            cfg_error: self.cfg_error,
+            glitch_count: self.glitch_count,
+            illegal_count: dec.illegal_count,
+            rev_error_count: pos.rev_error_count,
+        }
+    }
+}

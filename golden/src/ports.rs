@@ -1,0 +1,99 @@
+//! The ports of `encspeed_core`, as one description: the emitted Verilog's header, the
+//! manifest and docs/ports.md are all written from [`core_ports`], and the latencies from
+//! [`Latency`].
+
+use crate::params::{Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
+use crate::speed_calc;
+use serde::Serialize;
+
+/// One port of `encspeed_core`.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Port {
+    /// Verilog name.
+    pub name: &'static str,
+    /// "input" or "output".
+    pub direction: &'static str,
+    /// Width in bits.
+    pub width: u32,
+    /// Meaning, unit and timing.
+    pub description: &'static str,
+}
+
+/// Every port of `encspeed_core` for `p`, in Verilog order of importance (clock first).
+pub fn core_ports(p: &Params) -> Vec<Port> {
+    let n = p.counter_bits();
+    let s = p.speed_bits();
+    let g = ERROR_COUNT_BITS;
+    let port = |name, direction, width, description| Port {
+        name,
+        direction,
+        width,
+        description,
+    };
+    let i = |name, width, d| port(name, "input", width, d);
+    let o = |name, width, d| port(name, "output", width, d);
+    vec![
+        i("clock", 1, "core clock; everything happens at its rising edge"),
+        i("reset", 1, "synchronous, active high; hold it for at least one edge"),
+        i("enc_a", 1, "encoder channel A, asynchronous (two-flop synchronised inside)"),
+        i("enc_b", 1, "encoder channel B, asynchronous; forward = A leads B by 90 degrees"),
+        i("enc_z", 1, "encoder index Z, asynchronous"),
+        i("cfg_dt", n, "dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)"),
+        i("cfg_timeout", n, "zero-speed timeout in dt intervals; 0 = the generation default; registered"),
+        i("cfg_filter", FILTER_BITS, "glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off"),
+        i("cfg_mode", 2, "decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Change only in reset"),
+        i("cfg_z_mode", 2, "index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset"),
+        i("clear_faults", 1, "clears fault_illegal, fault_overspeed, fault_revolution (an event in the same cycle wins)"),
+        o("position", POSITION_BITS, "position in decoder steps, 0 .. lines*2^s - 1 (s = 0, 1, 2 in x1, x2, x4); wraps at a revolution, which is its definition"),
+        o("z_latch", POSITION_BITS, "position latched at the last index edge (cfg_z_mode 2, 3)"),
+        o("index", 1, "one cycle: an index edge was processed"),
+        o("direction", 1, "direction of the last step: 1 = forward"),
+        o("nep", n, "Nep1 of Rairan's Table 1, in decoder steps; 0 after reset or a reversal"),
+        o("ndt", n, "Ndt1 of Rairan's Table 1, dt intervals; 1 after reset or a reversal"),
+        o("update", 1, "one cycle: nep or ndt has just been written"),
+        o("speed_n1", s, "Rairan n1 = Nep/Ndt, two's complement, speed_frac_bits fractional bits, units of omega_lim (one line per dt)"),
+        o("speed_n2", s, "Rairan n2, eq. (6); format as speed_n1"),
+        o("speed_n3", s, "Rairan n3, eq. (11): the estimate to use; format as speed_n1; negative = backward"),
+        o("speed_strobe", 1, "one cycle: speed_n1, speed_n2, speed_n3 have just been written"),
+        o("speed_pc", s, "fixed-time (pulse count) speed of the last cfg_dt window; format as speed_n1"),
+        o("speed_et", s, "fixed-space (elapsed time) speed dt/period of the last period at the window end; 0 before a period of the current direction; format as speed_n1"),
+        o("speed_mt", s, "M/T speed: steps of the window over the exact clock count spanning them, times dt; 0 for a window without steps; format as speed_n1"),
+        o("baseline_strobe", 1, "one cycle: speed_pc, speed_et, speed_mt have just been written"),
+        o("valid", 1, "speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration"),
+        o("stalled", 1, "no step for the zero-speed timeout: the speed is below one step per timeout"),
+        o("fault_illegal", 1, "sticky: A and B changed between two samples (an illegal transition)"),
+        o("fault_overspeed", 1, "sticky: the A or B filter rejected a level shorter than cfg_filter cycles (a glitch, or edges closer than the filter can pass)"),
+        o("fault_revolution", 1, "sticky: a revolution of one direction between two index edges had a count other than lines*2^s"),
+        o("cfg_error", 1, "cfg_dt = 1 or cfg_mode = 3 at the last edge"),
+        o("glitch_count", g, "pulses rejected by the A, B and Z filters since reset, saturating"),
+        o("illegal_count", g, "illegal transitions since reset, saturating"),
+        o("rev_error_count", g, "revolutions with a wrong count since reset, saturating"),
+    ]
+}
+
+/// Latencies of `encspeed_core` in clock edges, for a filter length `cfg_filter`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Latency {
+    /// From the edge that first samples a new level of A or B to the edge after which
+    /// `position` and (for a restart) `nep`/`ndt`/`update` show it: 3 + max(L, 1).
+    pub edge_to_position: u32,
+    /// Speed calculator: a start to its result, 3·(N + F + 1) + 5.
+    pub speed_calc: u32,
+    /// From the edge that first samples an A or B edge whose step restarts Table 1 (writes
+    /// Ndt1) to the edge after which `speed_strobe` shows the speeds computed from it:
+    /// edge_to_position + 1 + speed_calc + 1.
+    pub edge_to_speed_strobe: u32,
+}
+
+impl Latency {
+    /// The latencies for `p` and a filter of `cfg_filter` cycles.
+    pub fn new(p: &Params, cfg_filter: u64) -> Latency {
+        let edge_to_position = 3 + cfg_filter.max(1) as u32;
+        let speed_calc = speed_calc::latency_cycles(p.counter_bits(), p.speed_frac_bits());
+        Latency {
+            edge_to_position,
+            speed_calc,
+            edge_to_speed_strobe: edge_to_position + 1 + speed_calc + 1,
+        }
+    }
+}
