@@ -35,9 +35,10 @@
 //! - **Configuration.** `cfg_dt` = 0 means the generation default dt, 1 is used as 2 and
 //!   flags `cfg_error`; `cfg_timeout` = 0 means the generation default timeout; `cfg_mode` 3
 //!   decodes as x4 and flags `cfg_error`. `cfg_dt` and `cfg_timeout` are registered (a change
-//!   acts one edge later); `cfg_filter`, `cfg_mode` and `cfg_z_mode` act at once. Change
-//!   `cfg_mode` only while `reset` is high: a measurement in progress would be scaled
-//!   with the new mode.
+//!   acts one edge later); `cfg_filter`, `cfg_mode` and `cfg_z_mode` act at once. A change
+//!   of `cfg_mode` resets the whole core at the edge that sees it (as `reset` does:
+//!   position, estimators, counters and faults; a count in one mode means nothing in
+//!   another), then the start-up hold runs again.
 //! - **Faults.** `fault_illegal` (both channels changed between two samples),
 //!   `fault_overspeed` (the A or B filter rejected a level shorter than `cfg_filter`
 //!   cycles: a glitch, or edges closer than the filter passes) and `fault_revolution` (a
@@ -188,6 +189,7 @@ pub fn mode_scale_error_lsb(shift: u32) -> f64 {
 pub struct CoreModel {
     default_dt: u64,
     default_timeout: u64,
+    mode_reg: u8,
     lines: u64,
     fill: u64,
     sync: [[bool; 2]; 3],
@@ -227,6 +229,7 @@ impl CoreModel {
         CoreModel {
             default_dt: p.dt_cycles(),
             default_timeout: p.timeout_dt(),
+            mode_reg: 0,
             lines: u64::from(p.lines()),
             fill: 0,
             sync: [[false; 2]; 3],
@@ -290,6 +293,10 @@ impl CoreModel {
     pub fn step(&mut self, inp: CoreInputs) -> CoreOutputs {
         assert!(inp.cfg_mode <= MODE_INVALID, "cfg_mode = {}", inp.cfg_mode);
         let shift = mode_shift(inp.cfg_mode);
+        // A change of cfg_mode resets the core, as `reset` does (a count in one mode means
+        // nothing in another).
+        let rst = inp.reset || inp.cfg_mode != self.mode_reg;
+        self.mode_reg = inp.cfg_mode;
         // Registered values before the edge.
         let filt = self.filters.each_ref().map(|f| f.outputs());
         let dec = self.decoder.state();
@@ -301,15 +308,15 @@ impl CoreModel {
         let mt = self.mt.outputs();
 
         let front_hold = self.fill < SYNC_CYCLES + inp.cfg_filter.max(1);
-        let front_reset = inp.reset || front_hold;
+        let front_reset = rst || front_hold;
         let reversal = dec.step && self.have_dir && dec.forward != self.last_dir;
-        let engine_reset = inp.reset || reversal;
+        let engine_reset = rst || reversal;
         let restart = !engine_reset && dec.step && self.engine.state().cdt != 0;
         let primed_before = self.primed;
 
         for (c, f) in self.filters.iter_mut().enumerate() {
             f.step(GlitchFilterInputs {
-                reset: inp.reset,
+                reset: rst,
                 level_in: self.sync[c][1],
                 cfg_filter: inp.cfg_filter,
             });
@@ -356,7 +363,7 @@ impl CoreModel {
                 self.speed_ok = true;
             }
         }
-        let (r, st, fw) = (inp.reset, dec.step, dec.forward);
+        let (r, st, fw) = (rst, dec.step, dec.forward);
         self.pc.step(PcInputs {
             reset: r,
             step: st,
@@ -375,7 +382,7 @@ impl CoreModel {
             cfg_dt: self.dt_reg,
         });
         self.baseline.step(BaselineSpeedsInputs {
-            reset: inp.reset,
+            reset: rst,
             start: pc.strobe,
             req: BaselineRequest {
                 pc_count: pc.count,
@@ -396,15 +403,15 @@ impl CoreModel {
             pos.rev_fault,
         ];
         for (f, e) in self.faults.iter_mut().zip(events) {
-            *f = !inp.reset && ((*f && !inp.clear_faults) || e);
+            *f = !rst && ((*f && !inp.clear_faults) || e);
         }
         let rejected: u64 = filt.iter().map(|f| u64::from(f.rejected)).sum();
-        self.glitch_count = if inp.reset {
+        self.glitch_count = if rst {
             0
         } else {
             (self.glitch_count + rejected).min(max_value(ERROR_COUNT_BITS))
         };
-        if inp.reset {
+        if rst {
             self.have_dir = false;
             self.last_dir = false;
         } else if dec.step {
@@ -419,13 +426,13 @@ impl CoreModel {
             inp.cfg_timeout
         };
         for (c, level) in [inp.enc_a, inp.enc_b, inp.enc_z].into_iter().enumerate() {
-            self.sync[c] = if inp.reset {
+            self.sync[c] = if rst {
                 [false; 2]
             } else {
                 [level, self.sync[c][0]]
             };
         }
-        self.fill = if inp.reset {
+        self.fill = if rst {
             0
         } else {
             (self.fill + 1).min(SYNC_CYCLES + max_value(FILTER_BITS))

@@ -138,6 +138,8 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     dt_reg: DFF<Bits<N>>,
     timeout_reg: DFF<Bits<N>>,
     cfg_error_reg: DFF<Bit>,
+    mode_reg: DFF<Bits<2>>,
+    rst: Signal<Local, Bit>,
     front_reset: Signal<Local, Bit>,
     reversal: Signal<Local, Bit>,
     engine_reset: Signal<Local, Bit>,
@@ -149,7 +151,6 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     min_dt: Constant<Bits<N>>,
     default_dt: Constant<Bits<N>>,
     default_timeout: Constant<Bits<N>>,
-    s_zero: Constant<Bits<S>>,
     mode_x1: Constant<Bits<2>>,
     mode_x2: Constant<Bits<2>>,
     mode_invalid: Constant<Bits<2>>,
@@ -231,6 +232,8 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             dt_reg: Default::default(),
             timeout_reg: Default::default(),
             cfg_error_reg: Default::default(),
+            mode_reg: Default::default(),
+            rst: Default::default(),
             front_reset: Default::default(),
             reversal: Default::default(),
             engine_reset: Default::default(),
@@ -242,7 +245,6 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             min_dt: Constant::new(MIN_DT_CYCLES.into()),
             default_dt: Constant::new(p.dt_cycles().into()),
             default_timeout: Constant::new(p.timeout_dt().into()),
-            s_zero: Constant::new(0.into()),
             mode_x1: Constant::new(u64::from(golden::frontend::MODE_X1).into()),
             mode_x2: Constant::new(u64::from(golden::frontend::MODE_X2).into()),
             mode_invalid: Constant::new(u64::from(golden::frontend::MODE_INVALID).into()),
@@ -271,8 +273,13 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             et_have,
             dt_reg,
             timeout_reg,
-            cfg_error_reg
+            cfg_error_reg,
+            mode_reg
         );
+
+        // A change of cfg_mode resets the core as `reset` does.
+        self.mode_reg.d.next = self.cfg_mode.val();
+        self.rst.next = self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
 
         // Configuration: defaults for 0, dt below 2 used as 2; log2 of steps per line.
         self.dt_eff.next = self.cfg_dt.val();
@@ -299,18 +306,18 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         }
 
         // Front end.
-        self.sync_a.reset.next = self.reset.val();
-        self.sync_b.reset.next = self.reset.val();
-        self.sync_z.reset.next = self.reset.val();
+        self.sync_a.reset.next = self.rst.val();
+        self.sync_b.reset.next = self.rst.val();
+        self.sync_z.reset.next = self.rst.val();
         self.sync_a.level_in.next = self.enc_a.val();
         self.sync_b.level_in.next = self.enc_b.val();
         self.sync_z.level_in.next = self.enc_z.val();
-        self.startup.reset.next = self.reset.val();
+        self.startup.reset.next = self.rst.val();
         self.startup.cfg_filter.next = self.cfg_filter.val();
-        self.front_reset.next = self.reset.val() | self.startup.hold.val();
-        self.filter_a.reset.next = self.reset.val();
-        self.filter_b.reset.next = self.reset.val();
-        self.filter_z.reset.next = self.reset.val();
+        self.front_reset.next = self.rst.val() | self.startup.hold.val();
+        self.filter_a.reset.next = self.rst.val();
+        self.filter_b.reset.next = self.rst.val();
+        self.filter_z.reset.next = self.rst.val();
         self.filter_a.level_in.next = self.sync_a.level_out.val();
         self.filter_b.level_in.next = self.sync_b.level_out.val();
         self.filter_z.level_in.next = self.sync_z.level_out.val();
@@ -332,12 +339,12 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.reversal.next = self.decoder.step.val()
             & self.have_dir.q.val()
             & (self.decoder.forward.val() ^ self.last_dir.q.val());
-        self.engine_reset.next = self.reset.val() | self.reversal.val();
+        self.engine_reset.next = self.rst.val() | self.reversal.val();
         if self.decoder.step.val() {
             self.have_dir.d.next = true;
             self.last_dir.d.next = self.decoder.forward.val();
         }
-        if self.reset.val() {
+        if self.rst.val() {
             self.have_dir.d.next = false;
             self.last_dir.d.next = false;
         }
@@ -370,9 +377,9 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.hold.n3_in.next = self.scale_n3.scaled.val();
 
         // Baselines: PC, ET, M/T on the same steps, converted at each window end.
-        self.pc.reset.next = self.reset.val();
-        self.et.reset.next = self.reset.val();
-        self.mt.reset.next = self.reset.val();
+        self.pc.reset.next = self.rst.val();
+        self.et.reset.next = self.rst.val();
+        self.mt.reset.next = self.rst.val();
         self.pc.step.next = self.decoder.step.val();
         self.et.step.next = self.decoder.step.val();
         self.mt.step.next = self.decoder.step.val();
@@ -383,7 +390,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.mt.cfg_dt.next = self.dt_reg.q.val();
         self.et_have.d.next =
             !self.engine_reset.val() & (self.et_have.q.val() | self.et.strobe.val());
-        self.baseline.reset.next = self.reset.val();
+        self.baseline.reset.next = self.rst.val();
         self.baseline.start.next = self.pc.strobe.val();
         self.baseline.pc_count.next = self.pc.count.val();
         self.baseline.et_period.next = self.et.period.val();
@@ -397,7 +404,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.baseline.mode_shift.next = self.shift.val();
 
         // Faults.
-        self.faults.reset.next = self.reset.val();
+        self.faults.reset.next = self.rst.val();
         self.faults.clear_faults.next = self.clear_faults.val();
         self.faults.illegal.next = self.decoder.illegal.val();
         self.faults.rejected_a.next = self.filter_a.rejected.val();

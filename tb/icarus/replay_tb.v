@@ -1,25 +1,46 @@
 // Self-checking replay bench for the emitted encspeed_core.v, run in Icarus Verilog.
 //
 // Reads `vectors.txt` (one line per clock cycle, written by tb::icarus from the bit-true
-// golden model): "reset enc_a enc_b enc_z cfg_dt nep ndt update stalled cfg_error" in
-// decimal, applies the inputs, gives one rising clock edge and compares every output with
-// the expected values. Ends with "N passed, M failed" and exits through $finish.
-// Compile with -DW=<counter_bits>.
+// golden model), in decimal: the inputs
+//   reset enc_a enc_b enc_z cfg_dt cfg_timeout cfg_filter cfg_mode cfg_z_mode clear_faults
+// then the expected outputs after the edge (speeds as raw S-bit two's complement)
+//   position z_latch index direction nep ndt update speed_n1 speed_n2 speed_n3 speed_strobe
+//   speed_pc speed_et speed_mt baseline_strobe valid stalled fault_illegal fault_overspeed
+//   fault_revolution cfg_error glitch_count illegal_count rev_error_count
+// applies the inputs, gives one rising clock edge and compares every output. Ends with
+// "N passed, M failed" and exits through $finish. Compile with -DW=<counter_bits> and
+// -DS=<speed bits>.
 module replay_tb;
     reg clock = 0;
-    reg reset, enc_a, enc_b, enc_z;
-    reg [`W-1:0] cfg_dt;
+    reg reset, enc_a, enc_b, enc_z, clear_faults;
+    reg [`W-1:0] cfg_dt, cfg_timeout;
+    reg [15:0] cfg_filter;
+    reg [1:0] cfg_mode, cfg_z_mode;
+    wire [31:0] position, z_latch;
+    wire index, direction, update, speed_strobe, baseline_strobe, valid, stalled;
+    wire fault_illegal, fault_overspeed, fault_revolution, cfg_error;
     wire [`W-1:0] nep, ndt;
-    wire update, stalled, cfg_error;
+    wire [`S-1:0] speed_n1, speed_n2, speed_n3, speed_pc, speed_et, speed_mt;
+    wire [15:0] glitch_count, illegal_count, rev_error_count;
 
     encspeed_core dut (
         .clock(clock), .reset(reset), .enc_a(enc_a), .enc_b(enc_b), .enc_z(enc_z),
-        .cfg_dt(cfg_dt), .nep(nep), .ndt(ndt), .update(update), .stalled(stalled),
-        .cfg_error(cfg_error)
+        .cfg_dt(cfg_dt), .cfg_timeout(cfg_timeout), .cfg_filter(cfg_filter),
+        .cfg_mode(cfg_mode), .cfg_z_mode(cfg_z_mode), .clear_faults(clear_faults),
+        .position(position), .z_latch(z_latch), .index(index), .direction(direction),
+        .nep(nep), .ndt(ndt), .update(update), .speed_n1(speed_n1), .speed_n2(speed_n2),
+        .speed_n3(speed_n3), .speed_strobe(speed_strobe), .speed_pc(speed_pc),
+        .speed_et(speed_et), .speed_mt(speed_mt), .baseline_strobe(baseline_strobe),
+        .valid(valid), .stalled(stalled), .fault_illegal(fault_illegal),
+        .fault_overspeed(fault_overspeed), .fault_revolution(fault_revolution),
+        .cfg_error(cfg_error), .glitch_count(glitch_count), .illegal_count(illegal_count),
+        .rev_error_count(rev_error_count)
     );
 
-    integer fd, n, passed, failed;
-    reg [63:0] r, a, b, z, dt, e_nep, e_ndt, e_update, e_stalled, e_cfg_error;
+    integer fd, n, k, passed, failed;
+    reg [63:0] v [0:33];
+    reg [63:0] got [0:23];
+    reg ok;
     initial begin
         passed = 0;
         failed = 0;
@@ -29,22 +50,33 @@ module replay_tb;
             $finish;
         end
         while (!$feof(fd)) begin
-            n = $fscanf(fd, "%d %d %d %d %d %d %d %d %d %d\n",
-                        r, a, b, z, dt, e_nep, e_ndt, e_update, e_stalled, e_cfg_error);
-            if (n == 10) begin
-                reset = r[0]; enc_a = a[0]; enc_b = b[0]; enc_z = z[0]; cfg_dt = dt[`W-1:0];
+            n = 0;
+            for (k = 0; k < 34; k = k + 1)
+                n = n + $fscanf(fd, "%d", v[k]);
+            if (n == 34) begin
+                reset = v[0][0]; enc_a = v[1][0]; enc_b = v[2][0]; enc_z = v[3][0];
+                cfg_dt = v[4][`W-1:0]; cfg_timeout = v[5][`W-1:0]; cfg_filter = v[6][15:0];
+                cfg_mode = v[7][1:0]; cfg_z_mode = v[8][1:0]; clear_faults = v[9][0];
                 #5 clock = 1;
                 #1;
-                if (nep === e_nep[`W-1:0] && ndt === e_ndt[`W-1:0] && update === e_update[0]
-                    && stalled === e_stalled[0] && cfg_error === e_cfg_error[0]) begin
-                    passed = passed + 1;
-                end else begin
-                    if (failed < 10)
-                        $display("cycle %0d: expected nep=%0d ndt=%0d update=%0d stalled=%0d cfg_error=%0d, got %0d %0d %0d %0d %0d",
-                                 passed + failed, e_nep, e_ndt, e_update, e_stalled, e_cfg_error,
-                                 nep, ndt, update, stalled, cfg_error);
-                    failed = failed + 1;
-                end
+                got[0] = position; got[1] = z_latch; got[2] = index; got[3] = direction;
+                got[4] = nep; got[5] = ndt; got[6] = update; got[7] = speed_n1;
+                got[8] = speed_n2; got[9] = speed_n3; got[10] = speed_strobe;
+                got[11] = speed_pc; got[12] = speed_et; got[13] = speed_mt;
+                got[14] = baseline_strobe; got[15] = valid; got[16] = stalled;
+                got[17] = fault_illegal; got[18] = fault_overspeed; got[19] = fault_revolution;
+                got[20] = cfg_error; got[21] = glitch_count; got[22] = illegal_count;
+                got[23] = rev_error_count;
+                ok = 1;
+                for (k = 0; k < 24; k = k + 1)
+                    if (got[k] !== v[10 + k]) begin
+                        ok = 0;
+                        if (failed < 10)
+                            $display("cycle %0d: output %0d expected %0d, got %0d",
+                                     passed + failed, k, v[10 + k], got[k]);
+                    end
+                if (ok) passed = passed + 1;
+                else failed = failed + 1;
                 #4 clock = 0;
             end
         end

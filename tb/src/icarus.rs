@@ -21,6 +21,7 @@ pub fn replay(
     tag: &str,
     verilog: &str,
     counter_bits: u32,
+    speed_bits: u32,
     inputs: &[CoreInputs],
     expected: &[CoreOutputs],
 ) -> Result<Replay, String> {
@@ -31,23 +32,49 @@ pub fn replay(
         |name: &str, text: &str| std::fs::write(dir.join(name), text).map_err(|e| e.to_string());
     w("encspeed_core.v", verilog)?;
     w("replay_tb.v", BENCH)?;
+    let raw = |v: i64| (v as u64) & ((1u64 << speed_bits) - 1);
     let vectors: String = inputs
         .iter()
         .zip(expected)
         .map(|(i, o)| {
-            format!(
-                "{} {} {} {} {} {} {} {} {} {}\n",
-                i.reset as u8,
-                i.enc_a as u8,
-                i.enc_b as u8,
-                i.enc_z as u8,
+            let fields: [u64; 34] = [
+                i.reset.into(),
+                i.enc_a.into(),
+                i.enc_b.into(),
+                i.enc_z.into(),
                 i.cfg_dt,
+                i.cfg_timeout,
+                i.cfg_filter,
+                i.cfg_mode.into(),
+                i.cfg_z_mode.into(),
+                i.clear_faults.into(),
+                o.position,
+                o.z_latch,
+                o.index.into(),
+                o.direction.into(),
                 o.nep,
                 o.ndt,
-                o.update as u8,
-                o.stalled as u8,
-                o.cfg_error as u8
-            )
+                o.update.into(),
+                raw(o.speed_n1),
+                raw(o.speed_n2),
+                raw(o.speed_n3),
+                o.speed_strobe.into(),
+                raw(o.speed_pc),
+                raw(o.speed_et),
+                raw(o.speed_mt),
+                o.baseline_strobe.into(),
+                o.valid.into(),
+                o.stalled.into(),
+                o.fault_illegal.into(),
+                o.fault_overspeed.into(),
+                o.fault_revolution.into(),
+                o.cfg_error.into(),
+                o.glitch_count,
+                o.illegal_count,
+                o.rev_error_count,
+            ];
+            let line: Vec<String> = fields.iter().map(u64::to_string).collect();
+            line.join(" ") + "\n"
         })
         .collect();
     w("vectors.txt", &vectors)?;
@@ -57,6 +84,7 @@ pub fn replay(
             "-Wall",
             "-g2005",
             &format!("-DW={counter_bits}"),
+            &format!("-DS={speed_bits}"),
             "-o",
             "replay.vvp",
         ])

@@ -51,6 +51,12 @@ fn manifest_records_the_parameters_and_ports() {
         Some(d.counter_bits as i64)
     );
     assert_eq!(m["generator"]["top_module"].as_str(), Some("encspeed_core"));
+    // What an outside bench reads to scale speed_n3: a top-level key.
+    assert_eq!(m["speed_frac_bits"].as_integer(), Some(16));
+    assert_eq!(
+        m["speed_bits"].as_integer(),
+        Some(i64::from(d.counter_bits) + 17)
+    );
     // ω_lim = 100e6 / (1024 · 100000) rev/s, by hand.
     assert_eq!(m["derived"]["omega_lim_rps"].as_float(), Some(0.9765625));
     let ports: Vec<&str> = m["ports"]
@@ -66,7 +72,26 @@ fn manifest_records_the_parameters_and_ports() {
         "Verilog lacks `{header}`"
     );
     for name in [
-        "clock", "reset", "enc_a", "enc_b", "enc_z", "cfg_dt", "nep", "ndt",
+        "clock",
+        "reset",
+        "enc_a",
+        "enc_b",
+        "enc_z",
+        "cfg_dt",
+        "cfg_timeout",
+        "cfg_filter",
+        "cfg_mode",
+        "cfg_z_mode",
+        "clear_faults",
+        "position",
+        "speed_n3",
+        "speed_strobe",
+        "speed_pc",
+        "speed_et",
+        "speed_mt",
+        "valid",
+        "stalled",
+        "fault_overspeed",
     ] {
         assert!(ports.contains(&name), "port {name} missing");
     }
@@ -159,6 +184,10 @@ fn shipped_verilog_equals_golden_in_verilator() {
         (4, 1),
         "3.3 ω_lim: Nep1 = ceil(3.3), Ndt1 = 1"
     );
+    // n3 = 2·Nep·(Nep − 1)/(Ndt·(2·Nep − 1)) = 24/7 ω_lim (eq. 11, by hand), in units of
+    // 2^−16: 24/7 · 65536 = 224694.86 → 224695.
+    assert_eq!(last.speed_n3, 224_695);
+    assert!(last.valid && !last.stalled);
     println!("{cycles} cycles identical");
 }
 
@@ -172,6 +201,7 @@ fn shipped_verilog_equals_golden_in_icarus() {
             &name,
             &shipped_verilog(),
             p.counter_bits(),
+            p.speed_bits(),
             &inputs,
             &golden,
         )
