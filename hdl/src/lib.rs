@@ -3,25 +3,29 @@
 //! | block | file | what it does |
 //! |---|---|---|
 //! | [`EncspeedCore`] | `core.rs` | top: wires the blocks below, ports of `encspeed_core` |
-//! | [`TwoFlopSync`] | `two_flop_sync.rs` | two-flop synchroniser of `enc_a` |
-//! | [`Startup`] | `startup.rs` | start-up sequencing after reset |
-//! | [`RisingEdge`] | `rising_edge.rs` | rising-edge detector: the encoder pulse `lep` |
-//! | [`Timebase`] | `timebase.rs` | ts/dt time base with runtime dt |
-//! | [`SyncEstimator`] | `sync_estimator.rs` | Table 1 registers Cep, Cdt, Nep1, Ndt1 |
-//!
-//! Blocks built and verified on their own (rust-hdl and Icarus against their golden models)
-//! and not yet part of `encspeed_core`:
-//!
-//! | block | file | what it does |
-//! |---|---|---|
-//! | [`GlitchFilter`] | `glitch_filter.rs` | passes a level after `cfg_filter` stable cycles, counts rejected glitches |
+//! | [`TwoFlopSync`] | `two_flop_sync.rs` | two-flop synchroniser of one encoder channel |
+//! | [`Startup`] | `startup.rs` | holds the decoder and position counter until the filters hold real samples |
+//! | [`GlitchFilter`] | `glitch_filter.rs` | passes a level after `cfg_filter` stable cycles, flags and counts rejected pulses |
 //! | [`QuadratureDecoder`] | `quadrature_decoder.rs` | x1/x2/x4 steps with direction, illegal-transition flag and counter |
 //! | [`PositionCounter`] | `position_counter.rs` | position modulo counts per revolution, Z reset/latch, revolution check |
-//! | [`SeqDivider`] | `seq_divider.rs` | unsigned radix-2 divider, one quotient bit per clock |
+//! | [`Timebase`] | `timebase.rs` | ts/dt time base with runtime dt and timeout |
+//! | [`SyncEstimator`] | `sync_estimator.rs` | Table 1 registers Cep, Nep1, Ndt1, update, primed |
 //! | [`SpeedCalc`] | `speed_calc.rs` | Rairán n1, n2, n3 as signed fixed point (sequential divider and multiplier) |
+//! | [`ModeScale`] | `mode_scale.rs` | steps per dt to lines per dt (÷1, 2, 4, rounded) |
+//! | [`SpeedHold`] | `speed_hold.rs` | speed registers, strobe and "has a speed", cleared at a reversal |
 //! | [`PcCounter`] | `pc_counter.rs` | fixed-time baseline: net signed steps per window of `cfg_dt` cycles (free-running), saturating |
 //! | [`EtTimer`] | `et_timer.rs` | fixed-space baseline: cycles between steps of one direction, saturating, `stalled` |
 //! | [`MtCounter`] | `mt_counter.rs` | M/T: per window, steps m and cycles T between the anchor and the last step |
+//! | [`BaselineSpeeds`] | `baseline_speeds.rs` | PC, ET and M/T speeds as signed fixed point (shared divider) |
+//! | [`FaultFlags`] | `fault_flags.rs` | sticky fault flags and the glitch counter |
+//! | [`WbRegs`] | `wb_regs.rs` | Wishbone B4 classic register file of the core (map in `golden::regmap`) |
+//!
+//! Blocks built and verified on their own (rust-hdl and Icarus against their golden models)
+//! and not part of `encspeed_core`:
+//!
+//! | block | file | what it does |
+//! |---|---|---|
+//! | [`SeqDivider`] | `seq_divider.rs` | unsigned radix-2 divider, one quotient bit per clock |
 //! | [`SineRom`] | `sine_rom.rs` | sine table of K entries at (m + m0) mod K, registered read |
 //! | [`EccArith`] | `ecc_arith.rs` | the corrector's multiply-and-round stage (custom Verilog) |
 //! | [`EccCorrector`] | `ecc_corrector.rs` | first-harmonic eccentricity correction of a line count, N_c in Q25.24 |
@@ -36,6 +40,7 @@ pub mod core;
 pub mod ecc_arith;
 pub mod ecc_corrector;
 pub mod emit;
+pub mod emit_wb;
 pub mod et_timer;
 pub mod fault_flags;
 pub mod glitch_filter;
@@ -58,12 +63,14 @@ mod test_support;
 pub mod timebase;
 pub mod two_flop_sync;
 pub mod wb_regs;
+pub mod wishbone_top;
 
 pub use crate::core::EncspeedCore;
 pub use baseline_speeds::{baseline_speeds_verilog, BaselineSpeeds};
 pub use ecc_arith::EccArith;
 pub use ecc_corrector::{ecc_corrector_verilog, EccCorrector};
 pub use emit::{emit_core, EmitInfo};
+pub use emit_wb::emit_wb;
 pub use et_timer::{et_timer_verilog, EtTimer};
 pub use fault_flags::FaultFlags;
 pub use glitch_filter::{glitch_filter_verilog, GlitchFilter};
@@ -84,3 +91,4 @@ pub use sync_estimator::SyncEstimator;
 pub use timebase::Timebase;
 pub use two_flop_sync::TwoFlopSync;
 pub use wb_regs::{wb_regs_verilog, WbRegs};
+pub use wishbone_top::{build_wb, EncspeedWb, WbSim};
