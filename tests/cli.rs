@@ -2,6 +2,7 @@
 //! bad parameters are refused with exit code 2 and a message naming them (nothing is
 //! written), and `simulate` writes a VCD under the path given.
 
+use golden::params::Spec;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -191,5 +192,219 @@ fn bode_writes_csv_and_svg_and_refuses_bad_arguments() {
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
         assert!(err.contains(name), "{args:?}: `{err}` should name {name}");
+    }
+}
+
+/// One invalid value per `Spec` field: (field, its option, a value `Params::new` refuses).
+const INVALID: &[(&str, &str, &str)] = &[
+    ("clock_hz", "--clock-hz", "0"),
+    ("lines", "--lines", "0"),
+    ("dt_cycles", "--dt-cycles", "1"),
+    ("counter_bits", "--counter-bits", "7"),
+    ("timeout_s", "--timeout-s", "-1"),
+];
+
+fn spec_keys() -> Vec<String> {
+    let t: toml::Table = toml::from_str(&toml::to_string(&Spec::default()).unwrap()).unwrap();
+    t.keys().cloned().collect()
+}
+
+/// An empty output directory under target/cli-test.
+fn empty_dir(name: &str) -> PathBuf {
+    let d = scratch(name);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn assert_empty(dir: &Path, what: &str) {
+    let n = std::fs::read_dir(dir).unwrap().count();
+    assert_eq!(n, 0, "{what}: wrote into {}", dir.display());
+}
+
+fn print_config(args: &[&str]) -> Spec {
+    let mut a = vec!["generate", "--print-config"];
+    a.extend_from_slice(args);
+    let o = encspeed(&a);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    toml::from_str(&String::from_utf8(o.stdout).unwrap()).unwrap()
+}
+
+#[test]
+fn invalid_cases_cover_every_spec_field() {
+    let mut covered: Vec<String> = INVALID.iter().map(|c| c.0.to_string()).collect();
+    let mut keys = spec_keys();
+    covered.sort();
+    keys.sort();
+    assert_eq!(covered, keys);
+}
+
+#[test]
+fn every_spec_field_has_an_option_with_unit_range_and_default() {
+    for cmd in ["generate", "simulate", "bench", "synth"] {
+        let o = encspeed(&[cmd, "--help"]);
+        let help = String::from_utf8_lossy(&o.stdout);
+        for opt in ["--config", "--print-config"] {
+            assert!(help.contains(opt), "{cmd} --help lacks {opt}");
+        }
+        for (key, opt, _) in INVALID {
+            let line = help
+                .lines()
+                .find(|l| l.trim_start().starts_with(opt))
+                .unwrap_or_else(|| panic!("{cmd} --help lacks {opt} ({key})"));
+            assert!(line.contains("[default "), "{cmd}: {line}");
+        }
+    }
+}
+
+#[test]
+fn invalid_option_of_every_field_exits_2_naming_it_and_writes_nothing() {
+    for (key, opt, value) in INVALID {
+        let out = empty_dir(&format!("bad-option-{key}"));
+        let o = encspeed(&["generate", "--out", out.to_str().unwrap(), opt, value]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{opt} {value}: {err}");
+        assert!(
+            err.contains(key),
+            "{opt} {value}: `{err}` should name {key}"
+        );
+        assert!(
+            err.contains(opt),
+            "{opt} {value}: `{err}` should name {opt}"
+        );
+        assert!(o.stdout.is_empty(), "{opt} {value}");
+        assert_empty(&out, &format!("{opt} {value}"));
+    }
+}
+
+#[test]
+fn invalid_config_value_of_every_field_exits_2_naming_it_and_writes_nothing() {
+    let dir = empty_dir("bad-config-values");
+    for (key, _, value) in INVALID {
+        let file = dir.join(format!("{key}.toml"));
+        // TOML integers are taken for float fields too.
+        std::fs::write(&file, format!("{key} = {value}\n")).unwrap();
+        let out = empty_dir(&format!("bad-config-{key}"));
+        let o = encspeed(&[
+            "generate",
+            "--config",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{key} = {value}: {err}");
+        assert!(
+            err.contains(key),
+            "{key} = {value}: `{err}` should name {key}"
+        );
+        assert!(
+            err.contains(file.to_str().unwrap()),
+            "{key} = {value}: `{err}` should name the file"
+        );
+        assert_empty(&out, &format!("{key} = {value}"));
+    }
+}
+
+#[test]
+fn unknown_or_mistyped_config_key_and_bad_files_are_refused() {
+    let dir = empty_dir("bad-config-files");
+    let out = empty_dir("bad-config-files-out");
+    let cases: &[(&str, Option<&str>, &[&str])] = &[
+        (
+            "unknown.toml",
+            Some("lines = 512\ncounter_bitz = 4\n"),
+            &["counter_bitz"],
+        ),
+        ("table.toml", Some("[encoder]\nlines = 512\n"), &["encoder"]),
+        ("type.toml", Some("lines = \"many\"\n"), &["lines", "u32"]),
+        (
+            "negative.toml",
+            Some("counter_bits = -3\n"),
+            &["counter_bits"],
+        ),
+        (
+            "syntax.toml",
+            Some("lines = \n"),
+            &["syntax.toml", "line 1"],
+        ),
+        ("missing.toml", None, &["missing.toml", "cannot read"]),
+    ];
+    for (name, text, needles) in cases {
+        let file = dir.join(name);
+        if let Some(t) = text {
+            std::fs::write(&file, t).unwrap();
+        }
+        let o = encspeed(&[
+            "generate",
+            "--config",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+        for n in *needles {
+            assert!(err.contains(n), "{name}: `{err}` should name {n}");
+        }
+        assert_empty(&out, name);
+    }
+}
+
+#[test]
+fn options_override_the_config_file_which_overrides_the_defaults() {
+    let dir = empty_dir("precedence");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, "lines = 500\ncounter_bits = 20\ntimeout_s = 2\n").unwrap();
+    let f = file.to_str().unwrap();
+    let from_file = print_config(&["--config", f]);
+    let both = print_config(&["--config", f, "--lines", "2000", "--timeout-s", "0.5"]);
+    let d = Spec::default();
+    assert_eq!(
+        from_file,
+        Spec {
+            lines: 500,
+            counter_bits: 20,
+            timeout_s: 2.0,
+            ..d.clone()
+        }
+    );
+    assert_eq!(
+        both,
+        Spec {
+            lines: 2000,
+            counter_bits: 20,
+            timeout_s: 0.5,
+            ..d.clone()
+        }
+    );
+    assert_eq!(print_config(&[]), d);
+    // The file's value is refused only if no option overrides it.
+    std::fs::write(&file, "lines = 0\n").unwrap();
+    assert_eq!(print_config(&["--config", f, "--lines", "8"]).lines, 8);
+}
+
+#[test]
+fn print_config_writes_nothing() {
+    let out = scratch("print-config");
+    let o = encspeed(&["generate", "--print-config", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!out.exists(), "wrote {}", out.display());
+}
+
+#[test]
+fn example_file_is_the_printed_defaults_and_parses_to_them() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("encspeed.example.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert_eq!(toml::from_str::<Spec>(&text).unwrap(), Spec::default());
+    let o = encspeed(&["generate", "--print-config"]);
+    assert_eq!(
+        String::from_utf8_lossy(&o.stdout),
+        text,
+        "regenerate with `encspeed generate --print-config > encspeed.example.toml`"
+    );
+    for key in spec_keys() {
+        let i = text.find(&format!("\n{key} = ")).expect(&key);
+        let comment = text[..i].lines().last().unwrap();
+        assert!(comment.starts_with("# "), "{key} has no comment line");
     }
 }
