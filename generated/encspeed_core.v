@@ -2,24 +2,49 @@
 // Command: encspeed generate --clock-hz 100000000 --lines 1024 --dt-cycles 100000 --counter-bits 24 --timeout-s 1
 // Parameters: clock_hz = 100000000, lines = 1024, dt_cycles = 100000, counter_bits = 24, timeout_s = 1
 // Derived: omega_lim = 0.9765625 rev/s at dt_cycles, timeout_dt = 1000 dt intervals, counters saturate at 16777215
-// Function: Rairan (2013) Table 1 synchronised speed estimator, one step per clock.
-// Latency: Table 1 on the samples of enc_a at each clock edge after reset, delayed by 2 cycles.
+// Function: quadrature encoder interface: filtered x1/x2/x4 decoding, position, Rairan (2013) synchronised speed n1/n2/n3 and the PC, ET and M/T baselines in hardware, faults.
+// Speeds: two's complement, 41 bits, speed_frac_bits = 16: value = raw * 2^-16 omega_lim (one line per dt).
+// Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 128; A/B edge that restarts Table 1 to speed_strobe 134.
 // Ports:
-//   input  clock: core clock; one Table 1 step (ts) per rising edge
-//   input  reset: synchronous, active high
-//   input  enc_a: encoder channel A, asynchronous; pulses are its rising edges
-//   input  enc_b: encoder channel B, asynchronous; reserved (not used yet)
-//   input  enc_z: encoder index Z, asynchronous; reserved (not used yet)
-//   input  cfg_dt[23:0]: dt in clock cycles; values below 2 are used as 2
-//   output nep[23:0]: Nep1: pulses in the last dt window that started at a pulse; 0 after reset
-//   output ndt[23:0]: Ndt1: whole dt intervals between the last two pulses; 1 after reset
-//   output update: high for one cycle when nep or ndt has just been written
-//   output stalled: no pulse for timeout_dt dt intervals (zero speed)
-//   output cfg_error: cfg_dt < 2 (combinational)
+//   input  clock: core clock; everything happens at its rising edge
+//   input  reset: synchronous, active high; hold it for at least one edge
+//   input  enc_a: encoder channel A, asynchronous (two-flop synchronised inside)
+//   input  enc_b: encoder channel B, asynchronous; forward = A leads B by 90 degrees
+//   input  enc_z: encoder index Z, asynchronous
+//   input  cfg_dt[23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)
+//   input  cfg_timeout[23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered
+//   input  cfg_filter[15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off
+//   input  cfg_mode[1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. A change resets the whole core (as reset)
+//   input  cfg_z_mode[1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset
+//   input  clear_faults: clears fault_illegal, fault_overspeed, fault_revolution (an event in the same cycle wins)
+//   output position[31:0]: position in decoder steps, 0 .. lines*2^s - 1 (s = 0, 1, 2 in x1, x2, x4); wraps at a revolution, which is its definition
+//   output z_latch[31:0]: position latched at the last index edge (cfg_z_mode 2, 3)
+//   output index: one cycle: an index edge was processed
+//   output direction: direction of the last step: 1 = forward
+//   output nep[23:0]: Nep1 of Rairan's Table 1, in decoder steps; 0 after reset or a reversal
+//   output ndt[23:0]: Ndt1 of Rairan's Table 1, dt intervals; 1 after reset or a reversal
+//   output update: one cycle: nep or ndt has just been written
+//   output speed_n1[40:0]: Rairan n1 = Nep/Ndt, two's complement, speed_frac_bits fractional bits, units of omega_lim (one line per dt)
+//   output speed_n2[40:0]: Rairan n2, eq. (6); format as speed_n1
+//   output speed_n3[40:0]: Rairan n3, eq. (11): the estimate to use; format as speed_n1; negative = backward
+//   output speed_strobe: one cycle: speed_n1, speed_n2, speed_n3 have just been written
+//   output speed_pc[40:0]: fixed-time (pulse count) speed of the last cfg_dt window; format as speed_n1
+//   output speed_et[40:0]: fixed-space (elapsed time) speed dt/period of the last period at the window end; 0 before a period of the current direction; format as speed_n1
+//   output speed_mt[40:0]: M/T speed: steps of the window over the exact clock count spanning them, times dt; 0 for a window without steps; format as speed_n1
+//   output baseline_strobe: one cycle: speed_pc, speed_et, speed_mt have just been written
+//   output valid: speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration
+//   output stalled: no step for the zero-speed timeout: the speed is below one step per timeout
+//   output fault_illegal: sticky: A and B changed between two samples (an illegal transition)
+//   output fault_overspeed: sticky: the A or B filter rejected a level shorter than cfg_filter cycles (a glitch, or edges closer than the filter can pass)
+//   output fault_revolution: sticky: a revolution of one direction between two index edges had a count other than lines*2^s
+//   output cfg_error: cfg_dt = 1 or cfg_mode = 3 at the last edge
+//   output glitch_count[15:0]: pulses rejected by the A, B and Z filters since reset, saturating
+//   output illegal_count[15:0]: illegal transitions since reset, saturating
+//   output rev_error_count[15:0]: revolutions with a wrong count since reset, saturating
 
 
 
-module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,nep,ndt,update,stalled,cfg_error);
+module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);
     
     // Module arguments
     input wire  clock;
@@ -28,33 +53,120 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,nep,ndt,update,stalled
     input wire  enc_b;
     input wire  enc_z;
     input wire  [23:0] cfg_dt;
+    input wire  [23:0] cfg_timeout;
+    input wire  [15:0] cfg_filter;
+    input wire  [1:0] cfg_mode;
+    input wire  [1:0] cfg_z_mode;
+    input wire  clear_faults;
+    output reg  [31:0] position;
+    output reg  [31:0] z_latch;
+    output reg  index;
+    output reg  direction;
     output reg  [23:0] nep;
     output reg  [23:0] ndt;
     output reg  update;
+    output reg  [40:0] speed_n1;
+    output reg  [40:0] speed_n2;
+    output reg  [40:0] speed_n3;
+    output reg  speed_strobe;
+    output reg  [40:0] speed_pc;
+    output reg  [40:0] speed_et;
+    output reg  [40:0] speed_mt;
+    output reg  baseline_strobe;
+    output reg  valid;
     output reg  stalled;
+    output reg  fault_illegal;
+    output reg  fault_overspeed;
+    output reg  fault_revolution;
     output reg  cfg_error;
+    output reg  [15:0] glitch_count;
+    output reg  [15:0] illegal_count;
+    output reg  [15:0] rev_error_count;
     
     // Constant declarations
+    localparam  n_zero = 24'h0;
+    localparam  n_one = 24'h1;
     localparam  min_dt = 24'h2;
+    localparam  default_dt = 24'h186a0;
+    localparam  default_timeout = 24'h3e8;
+    localparam  mode_x1 = 2'b0;
+    localparam  mode_x2 = 2'b1;
+    localparam  mode_invalid = 2'b11;
+    localparam  shift_zero = 2'b0;
+    localparam  shift_one = 2'b1;
+    localparam  shift_two = 2'b10;
+    localparam  lines_x1 = 32'h400;
+    localparam  lines_x2 = 32'h800;
+    localparam  lines_x4 = 32'h1000;
     
     // Stub signals
     reg  sync_a$clock;
     reg  sync_a$reset;
     reg  sync_a$level_in;
     wire  sync_a$level_out;
+    reg  sync_b$clock;
+    reg  sync_b$reset;
+    reg  sync_b$level_in;
+    wire  sync_b$level_out;
+    reg  sync_z$clock;
+    reg  sync_z$reset;
+    reg  sync_z$level_in;
+    wire  sync_z$level_out;
     reg  startup$clock;
     reg  startup$reset;
-    wire  startup$engine_run;
-    wire  startup$edge_enable;
-    reg  edge_a$clock;
-    reg  edge_a$reset;
-    reg  edge_a$level;
-    reg  edge_a$enable;
-    wire  edge_a$pulse;
+    reg  [15:0] startup$cfg_filter;
+    wire  startup$hold;
+    reg  filter_a$clock;
+    reg  filter_a$reset;
+    reg  filter_a$level_in;
+    reg  [15:0] filter_a$cfg_filter;
+    wire  filter_a$level_out;
+    wire  [15:0] filter_a$glitches;
+    wire  filter_a$rejected;
+    reg  filter_b$clock;
+    reg  filter_b$reset;
+    reg  filter_b$level_in;
+    reg  [15:0] filter_b$cfg_filter;
+    wire  filter_b$level_out;
+    wire  [15:0] filter_b$glitches;
+    wire  filter_b$rejected;
+    reg  filter_z$clock;
+    reg  filter_z$reset;
+    reg  filter_z$level_in;
+    reg  [15:0] filter_z$cfg_filter;
+    wire  filter_z$level_out;
+    wire  [15:0] filter_z$glitches;
+    wire  filter_z$rejected;
+    reg  decoder$clock;
+    reg  decoder$reset;
+    reg  decoder$a;
+    reg  decoder$b;
+    reg  [1:0] decoder$cfg_mode;
+    wire  decoder$step;
+    wire  decoder$forward;
+    wire  decoder$direction;
+    wire  decoder$illegal;
+    wire  decoder$illegal_seen;
+    wire  [15:0] decoder$illegal_count;
+    wire  decoder$mode_error;
+    reg  counter$clock;
+    reg  counter$reset;
+    reg  counter$step;
+    reg  counter$forward;
+    reg  counter$z;
+    reg  [31:0] counter$counts_per_rev;
+    reg  [1:0] counter$cfg_z_mode;
+    wire  [31:0] counter$position;
+    wire  [31:0] counter$z_latch;
+    wire  counter$index;
+    wire  counter$rev_error;
+    wire  [15:0] counter$rev_error_count;
+    wire  counter$rev_fault;
     reg  timebase$clock;
     reg  timebase$reset;
     reg  timebase$lep;
     reg  [23:0] timebase$dt;
+    reg  [23:0] timebase$timeout;
     wire  timebase$tick;
     wire  timebase$restart;
     wire  [23:0] timebase$cdt;
@@ -68,9 +180,123 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,nep,ndt,update,stalled
     wire  [23:0] table1$nep;
     wire  [23:0] table1$ndt;
     wire  table1$update;
+    wire  table1$primed;
+    reg  calc$clock;
+    reg  calc$reset;
+    reg  calc$start;
+    reg  [23:0] calc$nep;
+    reg  [23:0] calc$ndt;
+    reg  calc$negative;
+    wire  [40:0] calc$speed_n1;
+    wire  [40:0] calc$speed_n2;
+    wire  [40:0] calc$speed_n3;
+    wire  calc$valid;
+    wire  calc$busy;
+    reg  [40:0] scale_n1$value;
+    reg  [1:0] scale_n1$shift;
+    wire  [40:0] scale_n1$scaled;
+    reg  [40:0] scale_n2$value;
+    reg  [1:0] scale_n2$shift;
+    wire  [40:0] scale_n2$scaled;
+    reg  [40:0] scale_n3$value;
+    reg  [1:0] scale_n3$shift;
+    wire  [40:0] scale_n3$scaled;
+    reg  hold$clock;
+    reg  hold$clear;
+    reg  hold$load;
+    reg  [40:0] hold$n1_in;
+    reg  [40:0] hold$n2_in;
+    reg  [40:0] hold$n3_in;
+    wire  [40:0] hold$n1;
+    wire  [40:0] hold$n2;
+    wire  [40:0] hold$n3;
+    wire  hold$strobe;
+    wire  hold$have_speed;
+    reg  pc$clock;
+    reg  pc$reset;
+    reg  pc$step;
+    reg  pc$forward;
+    reg  [23:0] pc$cfg_dt;
+    wire  [23:0] pc$count;
+    wire  pc$saturated;
+    wire  pc$strobe;
+    reg  et$clock;
+    reg  et$reset;
+    reg  et$step;
+    reg  et$forward;
+    wire  [23:0] et$period;
+    wire  et$negative;
+    wire  et$strobe;
+    wire  et$stalled;
+    reg  mt$clock;
+    reg  mt$reset;
+    reg  mt$step;
+    reg  mt$forward;
+    reg  [23:0] mt$cfg_dt;
+    wire  [23:0] mt$m;
+    wire  [23:0] mt$t;
+    wire  mt$negative;
+    wire  mt$strobe;
+    wire  mt$stalled;
+    reg  baseline$clock;
+    reg  baseline$reset;
+    reg  baseline$start;
+    reg  [23:0] baseline$pc_count;
+    reg  [23:0] baseline$et_period;
+    reg  baseline$et_negative;
+    reg  baseline$et_valid;
+    reg  [23:0] baseline$mt_m;
+    reg  [23:0] baseline$mt_t;
+    reg  baseline$mt_negative;
+    reg  [23:0] baseline$cfg_dt;
+    reg  [1:0] baseline$mode_shift;
+    wire  [40:0] baseline$speed_pc;
+    wire  [40:0] baseline$speed_et;
+    wire  [40:0] baseline$speed_mt;
+    wire  baseline$valid;
+    wire  baseline$busy;
+    reg  faults$clock;
+    reg  faults$reset;
+    reg  faults$clear_faults;
+    reg  faults$illegal;
+    reg  faults$rejected_a;
+    reg  faults$rejected_b;
+    reg  faults$rejected_z;
+    reg  faults$rev_fault;
+    wire  faults$fault_illegal;
+    wire  faults$fault_overspeed;
+    wire  faults$fault_revolution;
+    wire  [15:0] faults$glitch_count;
+    reg  have_dir$d;
+    wire  have_dir$q;
+    reg  have_dir$clock;
+    reg  last_dir$d;
+    wire  last_dir$q;
+    reg  last_dir$clock;
+    reg  et_have$d;
+    wire  et_have$q;
+    reg  et_have$clock;
+    reg  [23:0] dt_reg$d;
+    wire  [23:0] dt_reg$q;
+    reg  dt_reg$clock;
+    reg  [23:0] timeout_reg$d;
+    wire  [23:0] timeout_reg$q;
+    reg  timeout_reg$clock;
+    reg  cfg_error_reg$d;
+    wire  cfg_error_reg$q;
+    reg  cfg_error_reg$clock;
+    reg  [1:0] mode_reg$d;
+    wire  [1:0] mode_reg$q;
+    reg  mode_reg$clock;
     
     // Local signals
+    reg  rst;
+    reg  front_reset;
+    reg  reversal;
     reg  engine_reset;
+    reg  [23:0] dt_eff;
+    reg  [1:0] shift;
+    reg  [31:0] counts_per_rev;
     
     // Sub module instances
     encspeed_core$sync_a sync_a(
@@ -79,24 +305,86 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,nep,ndt,update,stalled
         .level_in(sync_a$level_in),
         .level_out(sync_a$level_out)
     );
+    encspeed_core$sync_b sync_b(
+        .clock(sync_b$clock),
+        .reset(sync_b$reset),
+        .level_in(sync_b$level_in),
+        .level_out(sync_b$level_out)
+    );
+    encspeed_core$sync_z sync_z(
+        .clock(sync_z$clock),
+        .reset(sync_z$reset),
+        .level_in(sync_z$level_in),
+        .level_out(sync_z$level_out)
+    );
     encspeed_core$startup startup(
         .clock(startup$clock),
         .reset(startup$reset),
-        .engine_run(startup$engine_run),
-        .edge_enable(startup$edge_enable)
+        .cfg_filter(startup$cfg_filter),
+        .hold(startup$hold)
     );
-    encspeed_core$edge_a edge_a(
-        .clock(edge_a$clock),
-        .reset(edge_a$reset),
-        .level(edge_a$level),
-        .enable(edge_a$enable),
-        .pulse(edge_a$pulse)
+    encspeed_core$filter_a filter_a(
+        .clock(filter_a$clock),
+        .reset(filter_a$reset),
+        .level_in(filter_a$level_in),
+        .cfg_filter(filter_a$cfg_filter),
+        .level_out(filter_a$level_out),
+        .glitches(filter_a$glitches),
+        .rejected(filter_a$rejected)
+    );
+    encspeed_core$filter_b filter_b(
+        .clock(filter_b$clock),
+        .reset(filter_b$reset),
+        .level_in(filter_b$level_in),
+        .cfg_filter(filter_b$cfg_filter),
+        .level_out(filter_b$level_out),
+        .glitches(filter_b$glitches),
+        .rejected(filter_b$rejected)
+    );
+    encspeed_core$filter_z filter_z(
+        .clock(filter_z$clock),
+        .reset(filter_z$reset),
+        .level_in(filter_z$level_in),
+        .cfg_filter(filter_z$cfg_filter),
+        .level_out(filter_z$level_out),
+        .glitches(filter_z$glitches),
+        .rejected(filter_z$rejected)
+    );
+    encspeed_core$decoder decoder(
+        .clock(decoder$clock),
+        .reset(decoder$reset),
+        .a(decoder$a),
+        .b(decoder$b),
+        .cfg_mode(decoder$cfg_mode),
+        .step(decoder$step),
+        .forward(decoder$forward),
+        .direction(decoder$direction),
+        .illegal(decoder$illegal),
+        .illegal_seen(decoder$illegal_seen),
+        .illegal_count(decoder$illegal_count),
+        .mode_error(decoder$mode_error)
+    );
+    encspeed_core$counter counter(
+        .clock(counter$clock),
+        .reset(counter$reset),
+        .step(counter$step),
+        .forward(counter$forward),
+        .z(counter$z),
+        .counts_per_rev(counter$counts_per_rev),
+        .cfg_z_mode(counter$cfg_z_mode),
+        .position(counter$position),
+        .z_latch(counter$z_latch),
+        .index(counter$index),
+        .rev_error(counter$rev_error),
+        .rev_error_count(counter$rev_error_count),
+        .rev_fault(counter$rev_fault)
     );
     encspeed_core$timebase timebase(
         .clock(timebase$clock),
         .reset(timebase$reset),
         .lep(timebase$lep),
         .dt(timebase$dt),
+        .timeout(timebase$timeout),
         .tick(timebase$tick),
         .restart(timebase$restart),
         .cdt(timebase$cdt),
@@ -111,77 +399,1422 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,nep,ndt,update,stalled
         .cdt(table1$cdt),
         .nep(table1$nep),
         .ndt(table1$ndt),
-        .update(table1$update)
+        .update(table1$update),
+        .primed(table1$primed)
+    );
+    encspeed_core$calc calc(
+        .clock(calc$clock),
+        .reset(calc$reset),
+        .start(calc$start),
+        .nep(calc$nep),
+        .ndt(calc$ndt),
+        .negative(calc$negative),
+        .speed_n1(calc$speed_n1),
+        .speed_n2(calc$speed_n2),
+        .speed_n3(calc$speed_n3),
+        .valid(calc$valid),
+        .busy(calc$busy)
+    );
+    encspeed_core$scale_n1 scale_n1(
+        .value(scale_n1$value),
+        .shift(scale_n1$shift),
+        .scaled(scale_n1$scaled)
+    );
+    encspeed_core$scale_n2 scale_n2(
+        .value(scale_n2$value),
+        .shift(scale_n2$shift),
+        .scaled(scale_n2$scaled)
+    );
+    encspeed_core$scale_n3 scale_n3(
+        .value(scale_n3$value),
+        .shift(scale_n3$shift),
+        .scaled(scale_n3$scaled)
+    );
+    encspeed_core$hold hold(
+        .clock(hold$clock),
+        .clear(hold$clear),
+        .load(hold$load),
+        .n1_in(hold$n1_in),
+        .n2_in(hold$n2_in),
+        .n3_in(hold$n3_in),
+        .n1(hold$n1),
+        .n2(hold$n2),
+        .n3(hold$n3),
+        .strobe(hold$strobe),
+        .have_speed(hold$have_speed)
+    );
+    encspeed_core$pc pc(
+        .clock(pc$clock),
+        .reset(pc$reset),
+        .step(pc$step),
+        .forward(pc$forward),
+        .cfg_dt(pc$cfg_dt),
+        .count(pc$count),
+        .saturated(pc$saturated),
+        .strobe(pc$strobe)
+    );
+    encspeed_core$et et(
+        .clock(et$clock),
+        .reset(et$reset),
+        .step(et$step),
+        .forward(et$forward),
+        .period(et$period),
+        .negative(et$negative),
+        .strobe(et$strobe),
+        .stalled(et$stalled)
+    );
+    encspeed_core$mt mt(
+        .clock(mt$clock),
+        .reset(mt$reset),
+        .step(mt$step),
+        .forward(mt$forward),
+        .cfg_dt(mt$cfg_dt),
+        .m(mt$m),
+        .t(mt$t),
+        .negative(mt$negative),
+        .strobe(mt$strobe),
+        .stalled(mt$stalled)
+    );
+    encspeed_core$baseline baseline(
+        .clock(baseline$clock),
+        .reset(baseline$reset),
+        .start(baseline$start),
+        .pc_count(baseline$pc_count),
+        .et_period(baseline$et_period),
+        .et_negative(baseline$et_negative),
+        .et_valid(baseline$et_valid),
+        .mt_m(baseline$mt_m),
+        .mt_t(baseline$mt_t),
+        .mt_negative(baseline$mt_negative),
+        .cfg_dt(baseline$cfg_dt),
+        .mode_shift(baseline$mode_shift),
+        .speed_pc(baseline$speed_pc),
+        .speed_et(baseline$speed_et),
+        .speed_mt(baseline$speed_mt),
+        .valid(baseline$valid),
+        .busy(baseline$busy)
+    );
+    encspeed_core$faults faults(
+        .clock(faults$clock),
+        .reset(faults$reset),
+        .clear_faults(faults$clear_faults),
+        .illegal(faults$illegal),
+        .rejected_a(faults$rejected_a),
+        .rejected_b(faults$rejected_b),
+        .rejected_z(faults$rejected_z),
+        .rev_fault(faults$rev_fault),
+        .fault_illegal(faults$fault_illegal),
+        .fault_overspeed(faults$fault_overspeed),
+        .fault_revolution(faults$fault_revolution),
+        .glitch_count(faults$glitch_count)
+    );
+    encspeed_core$have_dir have_dir(
+        .d(have_dir$d),
+        .q(have_dir$q),
+        .clock(have_dir$clock)
+    );
+    encspeed_core$last_dir last_dir(
+        .d(last_dir$d),
+        .q(last_dir$q),
+        .clock(last_dir$clock)
+    );
+    encspeed_core$et_have et_have(
+        .d(et_have$d),
+        .q(et_have$q),
+        .clock(et_have$clock)
+    );
+    encspeed_core$dt_reg dt_reg(
+        .d(dt_reg$d),
+        .q(dt_reg$q),
+        .clock(dt_reg$clock)
+    );
+    encspeed_core$timeout_reg timeout_reg(
+        .d(timeout_reg$d),
+        .q(timeout_reg$q),
+        .clock(timeout_reg$clock)
+    );
+    encspeed_core$cfg_error_reg cfg_error_reg(
+        .d(cfg_error_reg$d),
+        .q(cfg_error_reg$q),
+        .clock(cfg_error_reg$clock)
+    );
+    encspeed_core$mode_reg mode_reg(
+        .d(mode_reg$d),
+        .q(mode_reg$q),
+        .clock(mode_reg$clock)
     );
     
     // Update code
     always @(*) begin
         sync_a$clock = clock;
+        sync_b$clock = clock;
+        sync_z$clock = clock;
         startup$clock = clock;
-        edge_a$clock = clock;
+        filter_a$clock = clock;
+        filter_b$clock = clock;
+        filter_z$clock = clock;
+        decoder$clock = clock;
+        counter$clock = clock;
         timebase$clock = clock;
         table1$clock = clock;
-        engine_reset = reset | ~startup$engine_run;
-        sync_a$reset = reset;
-        startup$reset = reset;
-        edge_a$reset = reset;
-        timebase$reset = engine_reset;
-        table1$reset = engine_reset;
+        calc$clock = clock;
+        hold$clock = clock;
+        pc$clock = clock;
+        et$clock = clock;
+        mt$clock = clock;
+        baseline$clock = clock;
+        faults$clock = clock;
+        have_dir$clock = clock;
+        last_dir$clock = clock;
+        et_have$clock = clock;
+        dt_reg$clock = clock;
+        timeout_reg$clock = clock;
+        cfg_error_reg$clock = clock;
+        mode_reg$clock = clock;
+        have_dir$d = have_dir$q;
+        last_dir$d = last_dir$q;
+        et_have$d = et_have$q;
+        dt_reg$d = dt_reg$q;
+        timeout_reg$d = timeout_reg$q;
+        cfg_error_reg$d = cfg_error_reg$q;
+        mode_reg$d = mode_reg$q;
+        mode_reg$d = cfg_mode;
+        rst = reset | (cfg_mode != mode_reg$q);
+        dt_eff = cfg_dt;
+        if (cfg_dt == n_zero) begin
+            dt_eff = default_dt;
+        end
+        else if (cfg_dt < min_dt) begin
+            dt_eff = min_dt;
+        end
+        dt_reg$d = dt_eff;
+        timeout_reg$d = cfg_timeout;
+        if (cfg_timeout == n_zero) begin
+            timeout_reg$d = default_timeout;
+        end
+        cfg_error_reg$d = (cfg_dt == n_one) | (cfg_mode == mode_invalid);
+        shift = shift_two;
+        counts_per_rev = lines_x4;
+        if (cfg_mode == mode_x1) begin
+            shift = shift_zero;
+            counts_per_rev = lines_x1;
+        end
+        else if (cfg_mode == mode_x2) begin
+            shift = shift_one;
+            counts_per_rev = lines_x2;
+        end
+        sync_a$reset = rst;
+        sync_b$reset = rst;
+        sync_z$reset = rst;
         sync_a$level_in = enc_a;
-        edge_a$level = sync_a$level_out;
-        edge_a$enable = startup$edge_enable;
-        timebase$lep = edge_a$pulse;
-        timebase$dt = cfg_dt;
-        table1$lep = edge_a$pulse;
+        sync_b$level_in = enc_b;
+        sync_z$level_in = enc_z;
+        startup$reset = rst;
+        startup$cfg_filter = cfg_filter;
+        front_reset = rst | startup$hold;
+        filter_a$reset = rst;
+        filter_b$reset = rst;
+        filter_z$reset = rst;
+        filter_a$level_in = sync_a$level_out;
+        filter_b$level_in = sync_b$level_out;
+        filter_z$level_in = sync_z$level_out;
+        filter_a$cfg_filter = cfg_filter;
+        filter_b$cfg_filter = cfg_filter;
+        filter_z$cfg_filter = cfg_filter;
+        decoder$reset = front_reset;
+        decoder$a = filter_a$level_out;
+        decoder$b = filter_b$level_out;
+        decoder$cfg_mode = cfg_mode;
+        counter$reset = front_reset;
+        counter$step = decoder$step;
+        counter$forward = decoder$forward;
+        counter$z = filter_z$level_out;
+        counter$counts_per_rev = counts_per_rev;
+        counter$cfg_z_mode = cfg_z_mode;
+        reversal = decoder$step & have_dir$q & (decoder$forward ^ last_dir$q);
+        engine_reset = rst | reversal;
+        if (decoder$step) begin
+            have_dir$d = 1'b1;
+            last_dir$d = decoder$forward;
+        end
+        if (rst) begin
+            have_dir$d = 1'b0;
+            last_dir$d = 1'b0;
+        end
+        timebase$reset = engine_reset;
+        timebase$lep = decoder$step;
+        timebase$dt = dt_eff;
+        timebase$timeout = timeout_reg$q;
+        table1$reset = engine_reset;
+        table1$lep = decoder$step;
         table1$tick = timebase$tick;
         table1$restart = timebase$restart;
         table1$cdt = timebase$cdt;
+        calc$reset = engine_reset;
+        calc$start = table1$update & table1$primed;
+        calc$nep = table1$nep;
+        calc$ndt = table1$ndt;
+        calc$negative = ~last_dir$q;
+        scale_n1$value = calc$speed_n1;
+        scale_n2$value = calc$speed_n2;
+        scale_n3$value = calc$speed_n3;
+        scale_n1$shift = shift;
+        scale_n2$shift = shift;
+        scale_n3$shift = shift;
+        hold$clear = engine_reset;
+        hold$load = calc$valid;
+        hold$n1_in = scale_n1$scaled;
+        hold$n2_in = scale_n2$scaled;
+        hold$n3_in = scale_n3$scaled;
+        pc$reset = rst;
+        et$reset = rst;
+        mt$reset = rst;
+        pc$step = decoder$step;
+        et$step = decoder$step;
+        mt$step = decoder$step;
+        pc$forward = decoder$forward;
+        et$forward = decoder$forward;
+        mt$forward = decoder$forward;
+        pc$cfg_dt = dt_reg$q;
+        mt$cfg_dt = dt_reg$q;
+        et_have$d = ~engine_reset & (et_have$q | et$strobe);
+        baseline$reset = rst;
+        baseline$start = pc$strobe;
+        baseline$pc_count = pc$count;
+        baseline$et_period = et$period;
+        baseline$et_negative = et$negative;
+        baseline$et_valid = (et_have$q | et$strobe) & ~et$stalled;
+        baseline$mt_m = mt$m;
+        baseline$mt_t = mt$t;
+        baseline$mt_negative = mt$negative;
+        baseline$cfg_dt = dt_reg$q;
+        baseline$mode_shift = shift;
+        faults$reset = rst;
+        faults$clear_faults = clear_faults;
+        faults$illegal = decoder$illegal;
+        faults$rejected_a = filter_a$rejected;
+        faults$rejected_b = filter_b$rejected;
+        faults$rejected_z = filter_z$rejected;
+        faults$rev_fault = counter$rev_fault;
+        position = counter$position;
+        z_latch = counter$z_latch;
+        index = counter$index;
+        direction = decoder$direction;
         nep = table1$nep;
         ndt = table1$ndt;
         update = table1$update;
+        speed_n1 = hold$n1;
+        speed_n2 = hold$n2;
+        speed_n3 = hold$n3;
+        speed_strobe = hold$strobe;
+        speed_pc = baseline$speed_pc;
+        speed_et = baseline$speed_et;
+        speed_mt = baseline$speed_mt;
+        baseline_strobe = baseline$valid;
         stalled = timebase$stalled;
-        cfg_error = cfg_dt < min_dt;
+        valid = hold$have_speed & ~timebase$stalled & ~cfg_error_reg$q;
+        fault_illegal = faults$fault_illegal;
+        fault_overspeed = faults$fault_overspeed;
+        fault_revolution = faults$fault_revolution;
+        cfg_error = cfg_error_reg$q;
+        glitch_count = faults$glitch_count;
+        illegal_count = decoder$illegal_count;
+        rev_error_count = counter$rev_error_count;
     end
     
 endmodule // encspeed_core
 
 
-module encspeed_core$edge_a(clock,reset,level,enable,pulse);
+module encspeed_core$baseline(clock,reset,start,pc_count,et_period,et_negative,et_valid,mt_m,mt_t,mt_negative,cfg_dt,mode_shift,speed_pc,speed_et,speed_mt,valid,busy);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
-    input wire  level;
-    input wire  enable;
-    output reg  pulse;
+    input wire  start;
+    input wire  [23:0] pc_count;
+    input wire  [23:0] et_period;
+    input wire  et_negative;
+    input wire  et_valid;
+    input wire  [23:0] mt_m;
+    input wire  [23:0] mt_t;
+    input wire  mt_negative;
+    input wire  [23:0] cfg_dt;
+    input wire  [1:0] mode_shift;
+    output reg  [40:0] speed_pc;
+    output reg  [40:0] speed_et;
+    output reg  [40:0] speed_mt;
+    output reg  valid;
+    output reg  busy;
+    
+    // Constant declarations
+    localparam  n_zero = 24'h0;
+    localparam  n_one = 24'h1;
+    localparam  n_msb = 24'h800000;
+    localparam  s_zero = 41'h0;
+    localparam  s_one = 41'h1;
+    localparam  s_msb = 41'h10000000000;
+    localparam  s_max = 41'hffffffffff;
+    localparam  sh_one = 8'h1;
+    localparam  sh_two = 8'h2;
+    localparam  mode_zero = 2'b0;
+    localparam  mode_two = 2'b10;
+    localparam  count_zero = 6'b0;
+    localparam  count_one = 6'b1;
+    localparam  count_first = 6'b101000;
+    localparam  count_mul_end = 6'b10000;
+    localparam  st_idle = 2'b0;
+    localparam  st_step = 2'b1;
+    localparam  st_setup = 2'b10;
+    localparam  st_finish = 2'b11;
     
     // Stub signals
-    reg  previous$d;
-    wire  previous$q;
-    reg  previous$clock;
+    reg  [23:0] req_pc$d;
+    wire  [23:0] req_pc$q;
+    reg  req_pc$clock;
+    reg  [23:0] req_period$d;
+    wire  [23:0] req_period$q;
+    reg  req_period$clock;
+    reg  req_et_neg$d;
+    wire  req_et_neg$q;
+    reg  req_et_neg$clock;
+    reg  req_et_valid$d;
+    wire  req_et_valid$q;
+    reg  req_et_valid$clock;
+    reg  [23:0] req_m$d;
+    wire  [23:0] req_m$q;
+    reg  req_m$clock;
+    reg  [23:0] req_t$d;
+    wire  [23:0] req_t$q;
+    reg  req_t$clock;
+    reg  req_mt_neg$d;
+    wire  req_mt_neg$q;
+    reg  req_mt_neg$clock;
+    reg  [23:0] req_dt$d;
+    wire  [23:0] req_dt$q;
+    reg  req_dt$clock;
+    reg  [1:0] req_shift$d;
+    wire  [1:0] req_shift$q;
+    reg  req_shift$clock;
+    reg  pending$d;
+    wire  pending$q;
+    reg  pending$clock;
+    reg  [23:0] w_pc$d;
+    wire  [23:0] w_pc$q;
+    reg  w_pc$clock;
+    reg  [23:0] w_t$d;
+    wire  [23:0] w_t$q;
+    reg  w_t$clock;
+    reg  w_sh1$d;
+    wire  w_sh1$q;
+    reg  w_sh1$clock;
+    reg  w_sh2$d;
+    wire  w_sh2$q;
+    reg  w_sh2$clock;
+    reg  w_et_neg$d;
+    wire  w_et_neg$q;
+    reg  w_et_neg$clock;
+    reg  w_et_zero$d;
+    wire  w_et_zero$q;
+    reg  w_et_zero$clock;
+    reg  w_mt_neg$d;
+    wire  w_mt_neg$q;
+    reg  w_mt_neg$clock;
+    reg  w_mt_zero$d;
+    wire  w_mt_zero$q;
+    reg  w_mt_zero$clock;
+    reg  w_mt_sat$d;
+    wire  w_mt_sat$q;
+    reg  w_mt_sat$clock;
+    reg  [1:0] state$d;
+    wire  [1:0] state$q;
+    reg  state$clock;
+    reg  phase$d;
+    wire  phase$q;
+    reg  phase$clock;
+    reg  [5:0] count$d;
+    wire  [5:0] count$q;
+    reg  count$clock;
+    reg  [23:0] mul_md$d;
+    wire  [23:0] mul_md$q;
+    reg  mul_md$clock;
+    reg  [23:0] mul_a$d;
+    wire  [23:0] mul_a$q;
+    reg  mul_a$clock;
+    reg  [23:0] mul_q$d;
+    wire  [23:0] mul_q$q;
+    reg  mul_q$clock;
+    reg  [23:0] part_rem$d;
+    wire  [23:0] part_rem$q;
+    reg  part_rem$clock;
+    reg  [23:0] den$d;
+    wire  [23:0] den$q;
+    reg  den$clock;
+    reg  [40:0] dq$d;
+    wire  [40:0] dq$q;
+    reg  dq$clock;
+    reg  [40:0] stage_et$d;
+    wire  [40:0] stage_et$q;
+    reg  stage_et$clock;
+    reg  [40:0] out_pc$d;
+    wire  [40:0] out_pc$q;
+    reg  out_pc$clock;
+    reg  [40:0] out_et$d;
+    wire  [40:0] out_et$q;
+    reg  out_et$clock;
+    reg  [40:0] out_mt$d;
+    wire  [40:0] out_mt$q;
+    reg  out_mt$clock;
+    reg  valid_reg$d;
+    wire  valid_reg$q;
+    reg  valid_reg$clock;
+    
+    // Local signals
+    reg  take;
+    reg  [23:0] dt_eff;
+    reg  [23:0] src_a;
+    reg  [23:0] src_q;
+    reg  src_sh1;
+    reg  src_sh2;
+    reg  [40:0] load_dq;
+    reg  [23:0] load_rem;
+    reg  mul_q0;
+    reg  [23:0] mul_sum;
+    reg  mul_a_msb;
+    reg  mul_md_msb;
+    reg  mul_sum_msb;
+    reg  mul_carry;
+    reg  dq_msb;
+    reg  rem_msb;
+    reg  [23:0] shifted;
+    reg  [23:0] diff;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  borrow;
+    reg  fits;
+    reg  [23:0] next_rem;
+    reg  sel_neg;
+    reg  sel_zero;
+    reg  sel_sat;
+    reg  [40:0] half;
+    reg  round_bit;
+    reg  [40:0] addend;
+    reg  [40:0] rounded;
+    reg  pc_sign;
+    reg  [40:0] pc_speed;
     
     // Sub module instances
-    encspeed_core$edge_a$previous previous(
-        .d(previous$d),
-        .q(previous$q),
-        .clock(previous$clock)
+    encspeed_core$baseline$req_pc req_pc(
+        .d(req_pc$d),
+        .q(req_pc$q),
+        .clock(req_pc$clock)
+    );
+    encspeed_core$baseline$req_period req_period(
+        .d(req_period$d),
+        .q(req_period$q),
+        .clock(req_period$clock)
+    );
+    encspeed_core$baseline$req_et_neg req_et_neg(
+        .d(req_et_neg$d),
+        .q(req_et_neg$q),
+        .clock(req_et_neg$clock)
+    );
+    encspeed_core$baseline$req_et_valid req_et_valid(
+        .d(req_et_valid$d),
+        .q(req_et_valid$q),
+        .clock(req_et_valid$clock)
+    );
+    encspeed_core$baseline$req_m req_m(
+        .d(req_m$d),
+        .q(req_m$q),
+        .clock(req_m$clock)
+    );
+    encspeed_core$baseline$req_t req_t(
+        .d(req_t$d),
+        .q(req_t$q),
+        .clock(req_t$clock)
+    );
+    encspeed_core$baseline$req_mt_neg req_mt_neg(
+        .d(req_mt_neg$d),
+        .q(req_mt_neg$q),
+        .clock(req_mt_neg$clock)
+    );
+    encspeed_core$baseline$req_dt req_dt(
+        .d(req_dt$d),
+        .q(req_dt$q),
+        .clock(req_dt$clock)
+    );
+    encspeed_core$baseline$req_shift req_shift(
+        .d(req_shift$d),
+        .q(req_shift$q),
+        .clock(req_shift$clock)
+    );
+    encspeed_core$baseline$pending pending(
+        .d(pending$d),
+        .q(pending$q),
+        .clock(pending$clock)
+    );
+    encspeed_core$baseline$w_pc w_pc(
+        .d(w_pc$d),
+        .q(w_pc$q),
+        .clock(w_pc$clock)
+    );
+    encspeed_core$baseline$w_t w_t(
+        .d(w_t$d),
+        .q(w_t$q),
+        .clock(w_t$clock)
+    );
+    encspeed_core$baseline$w_sh1 w_sh1(
+        .d(w_sh1$d),
+        .q(w_sh1$q),
+        .clock(w_sh1$clock)
+    );
+    encspeed_core$baseline$w_sh2 w_sh2(
+        .d(w_sh2$d),
+        .q(w_sh2$q),
+        .clock(w_sh2$clock)
+    );
+    encspeed_core$baseline$w_et_neg w_et_neg(
+        .d(w_et_neg$d),
+        .q(w_et_neg$q),
+        .clock(w_et_neg$clock)
+    );
+    encspeed_core$baseline$w_et_zero w_et_zero(
+        .d(w_et_zero$d),
+        .q(w_et_zero$q),
+        .clock(w_et_zero$clock)
+    );
+    encspeed_core$baseline$w_mt_neg w_mt_neg(
+        .d(w_mt_neg$d),
+        .q(w_mt_neg$q),
+        .clock(w_mt_neg$clock)
+    );
+    encspeed_core$baseline$w_mt_zero w_mt_zero(
+        .d(w_mt_zero$d),
+        .q(w_mt_zero$q),
+        .clock(w_mt_zero$clock)
+    );
+    encspeed_core$baseline$w_mt_sat w_mt_sat(
+        .d(w_mt_sat$d),
+        .q(w_mt_sat$q),
+        .clock(w_mt_sat$clock)
+    );
+    encspeed_core$baseline$state state(
+        .d(state$d),
+        .q(state$q),
+        .clock(state$clock)
+    );
+    encspeed_core$baseline$phase phase(
+        .d(phase$d),
+        .q(phase$q),
+        .clock(phase$clock)
+    );
+    encspeed_core$baseline$count count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+    encspeed_core$baseline$mul_md mul_md(
+        .d(mul_md$d),
+        .q(mul_md$q),
+        .clock(mul_md$clock)
+    );
+    encspeed_core$baseline$mul_a mul_a(
+        .d(mul_a$d),
+        .q(mul_a$q),
+        .clock(mul_a$clock)
+    );
+    encspeed_core$baseline$mul_q mul_q(
+        .d(mul_q$d),
+        .q(mul_q$q),
+        .clock(mul_q$clock)
+    );
+    encspeed_core$baseline$part_rem part_rem(
+        .d(part_rem$d),
+        .q(part_rem$q),
+        .clock(part_rem$clock)
+    );
+    encspeed_core$baseline$den den(
+        .d(den$d),
+        .q(den$q),
+        .clock(den$clock)
+    );
+    encspeed_core$baseline$dq dq(
+        .d(dq$d),
+        .q(dq$q),
+        .clock(dq$clock)
+    );
+    encspeed_core$baseline$stage_et stage_et(
+        .d(stage_et$d),
+        .q(stage_et$q),
+        .clock(stage_et$clock)
+    );
+    encspeed_core$baseline$out_pc out_pc(
+        .d(out_pc$d),
+        .q(out_pc$q),
+        .clock(out_pc$clock)
+    );
+    encspeed_core$baseline$out_et out_et(
+        .d(out_et$d),
+        .q(out_et$q),
+        .clock(out_et$clock)
+    );
+    encspeed_core$baseline$out_mt out_mt(
+        .d(out_mt$d),
+        .q(out_mt$q),
+        .clock(out_mt$clock)
+    );
+    encspeed_core$baseline$valid_reg valid_reg(
+        .d(valid_reg$d),
+        .q(valid_reg$q),
+        .clock(valid_reg$clock)
     );
     
     // Update code
     always @(*) begin
-        previous$clock = clock;
-        previous$d = previous$q;
-        previous$d = level;
-        if (reset) begin
-            previous$d = 1'b0;
+        req_pc$clock = clock;
+        req_period$clock = clock;
+        req_et_neg$clock = clock;
+        req_et_valid$clock = clock;
+        req_m$clock = clock;
+        req_t$clock = clock;
+        req_mt_neg$clock = clock;
+        req_dt$clock = clock;
+        req_shift$clock = clock;
+        pending$clock = clock;
+        w_pc$clock = clock;
+        w_t$clock = clock;
+        w_sh1$clock = clock;
+        w_sh2$clock = clock;
+        w_et_neg$clock = clock;
+        w_et_zero$clock = clock;
+        w_mt_neg$clock = clock;
+        w_mt_zero$clock = clock;
+        w_mt_sat$clock = clock;
+        state$clock = clock;
+        phase$clock = clock;
+        count$clock = clock;
+        mul_md$clock = clock;
+        mul_a$clock = clock;
+        mul_q$clock = clock;
+        part_rem$clock = clock;
+        den$clock = clock;
+        dq$clock = clock;
+        stage_et$clock = clock;
+        out_pc$clock = clock;
+        out_et$clock = clock;
+        out_mt$clock = clock;
+        valid_reg$clock = clock;
+        req_pc$d = req_pc$q;
+        req_period$d = req_period$q;
+        req_et_neg$d = req_et_neg$q;
+        req_et_valid$d = req_et_valid$q;
+        req_m$d = req_m$q;
+        req_t$d = req_t$q;
+        req_mt_neg$d = req_mt_neg$q;
+        req_dt$d = req_dt$q;
+        req_shift$d = req_shift$q;
+        pending$d = pending$q;
+        w_pc$d = w_pc$q;
+        w_t$d = w_t$q;
+        w_sh1$d = w_sh1$q;
+        w_sh2$d = w_sh2$q;
+        w_et_neg$d = w_et_neg$q;
+        w_et_zero$d = w_et_zero$q;
+        w_mt_neg$d = w_mt_neg$q;
+        w_mt_zero$d = w_mt_zero$q;
+        w_mt_sat$d = w_mt_sat$q;
+        state$d = state$q;
+        phase$d = phase$q;
+        count$d = count$q;
+        mul_md$d = mul_md$q;
+        mul_a$d = mul_a$q;
+        mul_q$d = mul_q$q;
+        part_rem$d = part_rem$q;
+        den$d = den$q;
+        dq$d = dq$q;
+        stage_et$d = stage_et$q;
+        out_pc$d = out_pc$q;
+        out_et$d = out_et$q;
+        out_mt$d = out_mt$q;
+        valid_reg$d = valid_reg$q;
+        take = (state$q == st_idle) & pending$q;
+        dt_eff = req_dt$q;
+        if (req_dt$q == n_zero) begin
+            dt_eff = n_one;
         end
-        pulse = level & ~previous$q & enable;
+        src_a = mul_a$q;
+        src_q = mul_q$q;
+        src_sh1 = w_sh1$q;
+        src_sh2 = w_sh2$q;
+        if (take) begin
+            src_a = n_zero;
+            src_q = dt_eff;
+            src_sh1 = req_shift$q != mode_zero;
+            src_sh2 = (req_shift$q & mode_two) != mode_zero;
+        end
+        load_dq = s_zero;
+        if (src_q[0]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[1]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[2]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[3]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[4]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[5]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[6]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[7]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[8]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[9]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[10]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[11]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[12]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[13]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[14]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[15]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[16]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[17]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[18]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[19]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[20]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[21]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[22]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        if (src_q[23]) begin
+            load_dq = (load_dq >> sh_one) | s_msb;
+        end
+        else begin
+            load_dq = load_dq >> sh_one;
+        end
+        load_rem = src_a;
+        if (src_sh1) begin
+            load_rem = src_a >> sh_one;
+            if (src_a[32'h0]) begin
+                load_dq = (load_dq >> sh_one) | s_msb;
+            end
+            else begin
+                load_dq = load_dq >> sh_one;
+            end
+        end
+        if (src_sh2) begin
+            load_rem = src_a >> sh_two;
+            if (src_a[32'h1]) begin
+                load_dq = (load_dq >> sh_one) | s_msb;
+            end
+            else begin
+                load_dq = load_dq >> sh_one;
+            end
+        end
+        mul_a_msb = (mul_a$q & n_msb) != n_zero;
+        mul_md_msb = (mul_md$q & n_msb) != n_zero;
+        mul_q0 = (mul_q$q & n_one) != n_zero;
+        mul_sum = mul_a$q;
+        if (mul_q0) begin
+            mul_sum = mul_a$q + mul_md$q;
+        end
+        mul_sum_msb = (mul_sum & n_msb) != n_zero;
+        mul_carry = mul_q0 & ((mul_a_msb & mul_md_msb) | ((mul_a_msb | mul_md_msb) & (~mul_sum_msb)));
+        dq_msb = (dq$q & s_msb) != s_zero;
+        rem_msb = (part_rem$q & n_msb) != n_zero;
+        shifted = part_rem$q << sh_one;
+        if (dq_msb) begin
+            shifted = (part_rem$q << sh_one) | n_one;
+        end
+        diff = shifted - den$q;
+        shifted_msb = (shifted & n_msb) != n_zero;
+        den_msb = (den$q & n_msb) != n_zero;
+        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & n_msb) != n_zero));
+        fits = rem_msb | (~borrow);
+        next_rem = shifted;
+        if (fits) begin
+            next_rem = diff;
+        end
+        sel_neg = w_et_neg$q;
+        sel_zero = w_et_zero$q;
+        sel_sat = 1'b0;
+        if (phase$q) begin
+            sel_neg = w_mt_neg$q;
+            sel_zero = w_mt_zero$q;
+            sel_sat = w_mt_sat$q;
+        end
+        half = dq$q >> sh_one;
+        round_bit = ((dq$q & s_one) != s_zero) & (~&dq$q);
+        if (sel_sat) begin
+            half = s_max;
+            round_bit = 1'b0;
+        end
+        if (sel_zero) begin
+            half = s_zero;
+            round_bit = 1'b0;
+        end
+        addend = half;
+        if (sel_neg) begin
+            addend = ~half;
+        end
+        rounded = addend;
+        if (round_bit ^ sel_neg) begin
+            rounded = addend + s_one;
+        end
+        pc_sign = (w_pc$q & n_msb) != n_zero;
+        pc_speed = s_zero;
+        if (w_pc$q[0]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[1]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[2]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[3]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[4]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[5]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[6]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[7]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[8]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[9]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[10]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[11]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[12]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[13]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[14]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[15]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[16]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[17]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[18]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[19]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[20]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[21]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[22]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_pc$q[23]) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (pc_sign) begin
+            pc_speed = (pc_speed >> sh_one) | s_msb;
+        end
+        else begin
+            pc_speed = pc_speed >> sh_one;
+        end
+        if (w_sh1$q) begin
+            if (pc_sign) begin
+                pc_speed = (pc_speed >> sh_one) | s_msb;
+            end
+            else begin
+                pc_speed = pc_speed >> sh_one;
+            end
+        end
+        if (w_sh2$q) begin
+            if (pc_sign) begin
+                pc_speed = (pc_speed >> sh_one) | s_msb;
+            end
+            else begin
+                pc_speed = pc_speed >> sh_one;
+            end
+        end
+        valid_reg$d = 1'b0;
+        if (take | (state$q == st_setup)) begin
+            part_rem$d = load_rem;
+            dq$d = load_dq;
+            count$d = count_first;
+            state$d = st_step;
+        end
+        if (take) begin
+            den$d = req_period$q;
+            w_pc$d = req_pc$q;
+            w_t$d = req_t$q;
+            w_sh1$d = src_sh1;
+            w_sh2$d = src_sh2;
+            w_et_neg$d = req_et_neg$q;
+            w_et_zero$d = (~req_et_valid$q) | (req_period$q == n_zero);
+            w_mt_neg$d = req_mt_neg$q;
+            w_mt_zero$d = (req_m$q == n_zero) | (req_t$q == n_zero);
+            mul_md$d = dt_eff;
+            mul_a$d = n_zero;
+            mul_q$d = req_m$q;
+            phase$d = 1'b0;
+            pending$d = 1'b0;
+        end
+        if (state$q == st_setup) begin
+            den$d = w_t$q;
+            stage_et$d = rounded;
+            w_mt_sat$d = load_rem >= w_t$q;
+            phase$d = 1'b1;
+        end
+        if (state$q == st_step) begin
+            part_rem$d = next_rem;
+            dq$d = dq$q << sh_one;
+            if (fits) begin
+                dq$d = (dq$q << sh_one) | s_one;
+            end
+            count$d = count$q - count_one;
+            if ((~phase$q) & (count$q > count_mul_end)) begin
+                mul_a$d = mul_sum >> sh_one;
+                if (mul_carry) begin
+                    mul_a$d = (mul_sum >> sh_one) | n_msb;
+                end
+                mul_q$d = mul_q$q >> sh_one;
+                if ((mul_sum & n_one) != n_zero) begin
+                    mul_q$d = (mul_q$q >> sh_one) | n_msb;
+                end
+            end
+            if (count$q == count_zero) begin
+                state$d = st_setup;
+                if (phase$q) begin
+                    state$d = st_finish;
+                end
+            end
+        end
+        if (state$q == st_finish) begin
+            out_pc$d = pc_speed;
+            out_et$d = stage_et$q;
+            out_mt$d = rounded;
+            valid_reg$d = 1'b1;
+            state$d = st_idle;
+        end
+        if (start) begin
+            req_pc$d = pc_count;
+            req_period$d = et_period;
+            req_et_neg$d = et_negative;
+            req_et_valid$d = et_valid;
+            req_m$d = mt_m;
+            req_t$d = mt_t;
+            req_mt_neg$d = mt_negative;
+            req_dt$d = cfg_dt;
+            req_shift$d = mode_shift;
+            pending$d = 1'b1;
+        end
+        if (reset) begin
+            pending$d = 1'b0;
+            state$d = st_idle;
+            valid_reg$d = 1'b0;
+            out_pc$d = s_zero;
+            out_et$d = s_zero;
+            out_mt$d = s_zero;
+        end
+        speed_pc = out_pc$q;
+        speed_et = out_et$q;
+        speed_mt = out_mt$q;
+        valid = valid_reg$q;
+        busy = pending$q | (state$q != st_idle);
     end
     
-endmodule // encspeed_core$edge_a
+endmodule // encspeed_core$baseline
 
 
-module encspeed_core$edge_a$previous(d,q,clock);
+module encspeed_core$baseline$count(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$count
+
+
+module encspeed_core$baseline$den(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$den
+
+
+module encspeed_core$baseline$dq(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$dq
+
+
+module encspeed_core$baseline$mul_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$mul_a
+
+
+module encspeed_core$baseline$mul_md(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$mul_md
+
+
+module encspeed_core$baseline$mul_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$mul_q
+
+
+module encspeed_core$baseline$out_et(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$out_et
+
+
+module encspeed_core$baseline$out_mt(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$out_mt
+
+
+module encspeed_core$baseline$out_pc(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$out_pc
+
+
+module encspeed_core$baseline$part_rem(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$part_rem
+
+
+module encspeed_core$baseline$pending(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -197,53 +1830,162 @@ module encspeed_core$edge_a$previous(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_core$edge_a$previous
+endmodule // encspeed_core$baseline$pending
 
 
-module encspeed_core$startup(clock,reset,engine_run,edge_enable);
+module encspeed_core$baseline$phase(d,q,clock);
     
     // Module arguments
+    input wire  d;
+    output reg  q;
     input wire  clock;
-    input wire  reset;
-    output reg  engine_run;
-    output reg  edge_enable;
     
-    // Constant declarations
-    localparam  zero = 2'b0;
-    localparam  one = 2'b1;
-    localparam  two = 2'b10;
-    localparam  three = 2'b11;
-    
-    // Stub signals
-    reg  [1:0] edges_seen$d;
-    wire  [1:0] edges_seen$q;
-    reg  edges_seen$clock;
-    
-    // Sub module instances
-    encspeed_core$startup$edges_seen edges_seen(
-        .d(edges_seen$d),
-        .q(edges_seen$q),
-        .clock(edges_seen$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        edges_seen$clock = clock;
-        edges_seen$d = edges_seen$q;
-        if (edges_seen$q != three) begin
-            edges_seen$d = edges_seen$q + one;
-        end
-        if (reset) begin
-            edges_seen$d = zero;
-        end
-        engine_run = edges_seen$q >= two;
-        edge_enable = edges_seen$q == three;
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
     end
     
-endmodule // encspeed_core$startup
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$phase
 
 
-module encspeed_core$startup$edges_seen(d,q,clock);
+module encspeed_core$baseline$req_dt(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$req_dt
+
+
+module encspeed_core$baseline$req_et_neg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$req_et_neg
+
+
+module encspeed_core$baseline$req_et_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$req_et_valid
+
+
+module encspeed_core$baseline$req_m(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$req_m
+
+
+module encspeed_core$baseline$req_mt_neg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$req_mt_neg
+
+
+module encspeed_core$baseline$req_pc(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$req_pc
+
+
+module encspeed_core$baseline$req_period(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$req_period
+
+
+module encspeed_core$baseline$req_shift(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -259,7 +2001,4634 @@ module encspeed_core$startup$edges_seen(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_core$startup$edges_seen
+endmodule // encspeed_core$baseline$req_shift
+
+
+module encspeed_core$baseline$req_t(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$req_t
+
+
+module encspeed_core$baseline$stage_et(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$stage_et
+
+
+module encspeed_core$baseline$state(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$state
+
+
+module encspeed_core$baseline$valid_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$valid_reg
+
+
+module encspeed_core$baseline$w_et_neg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_et_neg
+
+
+module encspeed_core$baseline$w_et_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_et_zero
+
+
+module encspeed_core$baseline$w_mt_neg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_mt_neg
+
+
+module encspeed_core$baseline$w_mt_sat(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_mt_sat
+
+
+module encspeed_core$baseline$w_mt_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_mt_zero
+
+
+module encspeed_core$baseline$w_pc(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_pc
+
+
+module encspeed_core$baseline$w_sh1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_sh1
+
+
+module encspeed_core$baseline$w_sh2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_sh2
+
+
+module encspeed_core$baseline$w_t(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$baseline$w_t
+
+
+module encspeed_core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n2,speed_n3,valid,busy);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  start;
+    input wire  [23:0] nep;
+    input wire  [23:0] ndt;
+    input wire  negative;
+    output reg  [40:0] speed_n1;
+    output reg  [40:0] speed_n2;
+    output reg  [40:0] speed_n3;
+    output reg  valid;
+    output reg  busy;
+    
+    // Constant declarations
+    localparam  n_zero = 24'h0;
+    localparam  p_zero = 49'h0;
+    localparam  p_one = 49'h1;
+    localparam  p_msb = 49'h1000000000000;
+    localparam  p_x_msb = 49'h1000000;
+    localparam  s_zero = 41'h0;
+    localparam  s_one = 41'h1;
+    localparam  s_max = 41'hffffffffff;
+    localparam  sh_one = 8'h1;
+    localparam  sh_n = 8'h18;
+    localparam  sh_low = 8'h19;
+    localparam  count_zero = 6'b0;
+    localparam  count_one = 6'b1;
+    localparam  count_first = 6'b101000;
+    localparam  count_mul_last = 6'b10000;
+    localparam  st_idle = 2'b0;
+    localparam  st_setup = 2'b1;
+    localparam  st_step = 2'b10;
+    localparam  st_finish = 2'b11;
+    localparam  ph_one = 2'b1;
+    localparam  ph_two = 2'b10;
+    localparam  ph_three = 2'b11;
+    
+    // Stub signals
+    reg  [23:0] req_nep$d;
+    wire  [23:0] req_nep$q;
+    reg  req_nep$clock;
+    reg  [23:0] req_ndt$d;
+    wire  [23:0] req_ndt$q;
+    reg  req_ndt$clock;
+    reg  req_neg$d;
+    wire  req_neg$q;
+    reg  req_neg$clock;
+    reg  pending$d;
+    wire  pending$q;
+    reg  pending$clock;
+    reg  [48:0] w_nep$d;
+    wire  [48:0] w_nep$q;
+    reg  w_nep$clock;
+    reg  [48:0] w_ndt$d;
+    wire  [48:0] w_ndt$q;
+    reg  w_ndt$clock;
+    reg  w_neg$d;
+    wire  w_neg$q;
+    reg  w_neg$clock;
+    reg  w_nep_zero$d;
+    wire  w_nep_zero$q;
+    reg  w_nep_zero$clock;
+    reg  w_ndt_zero$d;
+    wire  w_ndt_zero$q;
+    reg  w_ndt_zero$clock;
+    reg  [1:0] state$d;
+    wire  [1:0] state$q;
+    reg  state$clock;
+    reg  [1:0] phase$d;
+    wire  [1:0] phase$q;
+    reg  phase$clock;
+    reg  [5:0] count$d;
+    wire  [5:0] count$q;
+    reg  count$clock;
+    reg  mul_on$d;
+    wire  mul_on$q;
+    reg  mul_on$clock;
+    reg  [48:0] part_rem$d;
+    wire  [48:0] part_rem$q;
+    reg  part_rem$clock;
+    reg  [48:0] num_shift$d;
+    wire  [48:0] num_shift$q;
+    reg  num_shift$clock;
+    reg  [48:0] den$d;
+    wire  [48:0] den$q;
+    reg  den$clock;
+    reg  [40:0] quo$d;
+    wire  [40:0] quo$q;
+    reg  quo$clock;
+    reg  [48:0] mul_x$d;
+    wire  [48:0] mul_x$q;
+    reg  mul_x$clock;
+    reg  [48:0] acc_num$d;
+    wire  [48:0] acc_num$q;
+    reg  acc_num$clock;
+    reg  [48:0] acc_den$d;
+    wire  [48:0] acc_den$q;
+    reg  acc_den$clock;
+    reg  [40:0] stage_n1$d;
+    wire  [40:0] stage_n1$q;
+    reg  stage_n1$clock;
+    reg  [40:0] stage_n2$d;
+    wire  [40:0] stage_n2$q;
+    reg  stage_n2$clock;
+    reg  [40:0] out_n1$d;
+    wire  [40:0] out_n1$q;
+    reg  out_n1$clock;
+    reg  [40:0] out_n2$d;
+    wire  [40:0] out_n2$q;
+    reg  out_n2$clock;
+    reg  [40:0] out_n3$d;
+    wire  [40:0] out_n3$q;
+    reg  out_n3$clock;
+    reg  valid_reg$d;
+    wire  valid_reg$q;
+    reg  valid_reg$clock;
+    
+    // Local signals
+    reg  [48:0] req_nep_wide;
+    reg  [48:0] req_ndt_wide;
+    reg  high;
+    reg  [48:0] num_sel;
+    reg  [48:0] den_sel;
+    reg  [48:0] shifted;
+    reg  [48:0] diff;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  borrow;
+    reg  fits;
+    reg  [48:0] next_rem;
+    reg  x_bit;
+    reg  [40:0] half;
+    reg  round_bit;
+    reg  [40:0] addend;
+    reg  [40:0] rounded;
+    
+    // Sub module instances
+    encspeed_core$calc$req_nep req_nep(
+        .d(req_nep$d),
+        .q(req_nep$q),
+        .clock(req_nep$clock)
+    );
+    encspeed_core$calc$req_ndt req_ndt(
+        .d(req_ndt$d),
+        .q(req_ndt$q),
+        .clock(req_ndt$clock)
+    );
+    encspeed_core$calc$req_neg req_neg(
+        .d(req_neg$d),
+        .q(req_neg$q),
+        .clock(req_neg$clock)
+    );
+    encspeed_core$calc$pending pending(
+        .d(pending$d),
+        .q(pending$q),
+        .clock(pending$clock)
+    );
+    encspeed_core$calc$w_nep w_nep(
+        .d(w_nep$d),
+        .q(w_nep$q),
+        .clock(w_nep$clock)
+    );
+    encspeed_core$calc$w_ndt w_ndt(
+        .d(w_ndt$d),
+        .q(w_ndt$q),
+        .clock(w_ndt$clock)
+    );
+    encspeed_core$calc$w_neg w_neg(
+        .d(w_neg$d),
+        .q(w_neg$q),
+        .clock(w_neg$clock)
+    );
+    encspeed_core$calc$w_nep_zero w_nep_zero(
+        .d(w_nep_zero$d),
+        .q(w_nep_zero$q),
+        .clock(w_nep_zero$clock)
+    );
+    encspeed_core$calc$w_ndt_zero w_ndt_zero(
+        .d(w_ndt_zero$d),
+        .q(w_ndt_zero$q),
+        .clock(w_ndt_zero$clock)
+    );
+    encspeed_core$calc$state state(
+        .d(state$d),
+        .q(state$q),
+        .clock(state$clock)
+    );
+    encspeed_core$calc$phase phase(
+        .d(phase$d),
+        .q(phase$q),
+        .clock(phase$clock)
+    );
+    encspeed_core$calc$count count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+    encspeed_core$calc$mul_on mul_on(
+        .d(mul_on$d),
+        .q(mul_on$q),
+        .clock(mul_on$clock)
+    );
+    encspeed_core$calc$part_rem part_rem(
+        .d(part_rem$d),
+        .q(part_rem$q),
+        .clock(part_rem$clock)
+    );
+    encspeed_core$calc$num_shift num_shift(
+        .d(num_shift$d),
+        .q(num_shift$q),
+        .clock(num_shift$clock)
+    );
+    encspeed_core$calc$den den(
+        .d(den$d),
+        .q(den$q),
+        .clock(den$clock)
+    );
+    encspeed_core$calc$quo quo(
+        .d(quo$d),
+        .q(quo$q),
+        .clock(quo$clock)
+    );
+    encspeed_core$calc$mul_x mul_x(
+        .d(mul_x$d),
+        .q(mul_x$q),
+        .clock(mul_x$clock)
+    );
+    encspeed_core$calc$acc_num acc_num(
+        .d(acc_num$d),
+        .q(acc_num$q),
+        .clock(acc_num$clock)
+    );
+    encspeed_core$calc$acc_den acc_den(
+        .d(acc_den$d),
+        .q(acc_den$q),
+        .clock(acc_den$clock)
+    );
+    encspeed_core$calc$stage_n1 stage_n1(
+        .d(stage_n1$d),
+        .q(stage_n1$q),
+        .clock(stage_n1$clock)
+    );
+    encspeed_core$calc$stage_n2 stage_n2(
+        .d(stage_n2$d),
+        .q(stage_n2$q),
+        .clock(stage_n2$clock)
+    );
+    encspeed_core$calc$out_n1 out_n1(
+        .d(out_n1$d),
+        .q(out_n1$q),
+        .clock(out_n1$clock)
+    );
+    encspeed_core$calc$out_n2 out_n2(
+        .d(out_n2$d),
+        .q(out_n2$q),
+        .clock(out_n2$clock)
+    );
+    encspeed_core$calc$out_n3 out_n3(
+        .d(out_n3$d),
+        .q(out_n3$q),
+        .clock(out_n3$clock)
+    );
+    encspeed_core$calc$valid_reg valid_reg(
+        .d(valid_reg$d),
+        .q(valid_reg$q),
+        .clock(valid_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        req_nep$clock = clock;
+        req_ndt$clock = clock;
+        req_neg$clock = clock;
+        pending$clock = clock;
+        w_nep$clock = clock;
+        w_ndt$clock = clock;
+        w_neg$clock = clock;
+        w_nep_zero$clock = clock;
+        w_ndt_zero$clock = clock;
+        state$clock = clock;
+        phase$clock = clock;
+        count$clock = clock;
+        mul_on$clock = clock;
+        part_rem$clock = clock;
+        num_shift$clock = clock;
+        den$clock = clock;
+        quo$clock = clock;
+        mul_x$clock = clock;
+        acc_num$clock = clock;
+        acc_den$clock = clock;
+        stage_n1$clock = clock;
+        stage_n2$clock = clock;
+        out_n1$clock = clock;
+        out_n2$clock = clock;
+        out_n3$clock = clock;
+        valid_reg$clock = clock;
+        req_nep$d = req_nep$q;
+        req_ndt$d = req_ndt$q;
+        req_neg$d = req_neg$q;
+        pending$d = pending$q;
+        w_nep$d = w_nep$q;
+        w_ndt$d = w_ndt$q;
+        w_neg$d = w_neg$q;
+        w_nep_zero$d = w_nep_zero$q;
+        w_ndt_zero$d = w_ndt_zero$q;
+        state$d = state$q;
+        phase$d = phase$q;
+        count$d = count$q;
+        mul_on$d = mul_on$q;
+        part_rem$d = part_rem$q;
+        num_shift$d = num_shift$q;
+        den$d = den$q;
+        quo$d = quo$q;
+        mul_x$d = mul_x$q;
+        acc_num$d = acc_num$q;
+        acc_den$d = acc_den$q;
+        stage_n1$d = stage_n1$q;
+        stage_n2$d = stage_n2$q;
+        out_n1$d = out_n1$q;
+        out_n2$d = out_n2$q;
+        out_n3$d = out_n3$q;
+        valid_reg$d = valid_reg$q;
+        req_nep_wide = p_zero;
+        req_ndt_wide = p_zero;
+        if (req_nep$q[0]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[0]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[1]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[1]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[2]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[2]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[3]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[3]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[4]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[4]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[5]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[5]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[6]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[6]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[7]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[7]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[8]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[8]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[9]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[9]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[10]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[10]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[11]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[11]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[12]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[12]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[13]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[13]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[14]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[14]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[15]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[15]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[16]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[16]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[17]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[17]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[18]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[18]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[19]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[19]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[20]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[20]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[21]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[21]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[22]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[22]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        if (req_nep$q[23]) begin
+            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_nep_wide = req_nep_wide >> sh_one;
+        end
+        if (req_ndt$q[23]) begin
+            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            req_ndt_wide = req_ndt_wide >> sh_one;
+        end
+        req_nep_wide = req_nep_wide >> sh_low;
+        req_ndt_wide = req_ndt_wide >> sh_low;
+        high = (w_ndt$q << sh_one) <= w_nep$q;
+        num_sel = w_nep$q;
+        den_sel = w_ndt$q;
+        if (phase$q == ph_two) begin
+            if (high) begin
+                num_sel = w_nep$q - p_one;
+            end
+            else begin
+                den_sel = w_ndt$q + p_one;
+            end
+        end
+        if (phase$q == ph_three) begin
+            if (high) begin
+                num_sel = acc_num$q;
+                den_sel = acc_den$q;
+            end
+            else begin
+                num_sel = w_nep$q << sh_one;
+                den_sel = (w_ndt$q << sh_one) | p_one;
+            end
+        end
+        shifted = part_rem$q << sh_one;
+        if ((num_shift$q & p_msb) != p_zero) begin
+            shifted = (part_rem$q << sh_one) | p_one;
+        end
+        diff = shifted - den$q;
+        shifted_msb = (shifted & p_msb) != p_zero;
+        den_msb = (den$q & p_msb) != p_zero;
+        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & p_msb) != p_zero));
+        fits = ((part_rem$q & p_msb) != p_zero) | (~borrow);
+        next_rem = shifted;
+        if (fits) begin
+            next_rem = diff;
+        end
+        x_bit = (mul_x$q & p_x_msb) != p_zero;
+        half = quo$q >> sh_one;
+        round_bit = (quo$q & s_one) != s_zero;
+        if (w_ndt_zero$q) begin
+            half = s_max;
+            round_bit = 1'b0;
+        end
+        if (w_nep_zero$q) begin
+            half = s_zero;
+            round_bit = 1'b0;
+        end
+        addend = half;
+        if (w_neg$q) begin
+            addend = ~half;
+        end
+        rounded = addend;
+        if (round_bit ^ w_neg$q) begin
+            rounded = addend + s_one;
+        end
+        valid_reg$d = 1'b0;
+        if ((state$q == st_idle) & pending$q) begin
+            w_nep$d = req_nep_wide;
+            w_ndt$d = req_ndt_wide;
+            w_neg$d = req_neg$q;
+            w_nep_zero$d = req_nep$q == n_zero;
+            w_ndt_zero$d = req_ndt$q == n_zero;
+            pending$d = 1'b0;
+            phase$d = ph_one;
+            state$d = st_setup;
+        end
+        if (state$q == st_setup) begin
+            part_rem$d = num_sel >> sh_n;
+            num_shift$d = num_sel << sh_low;
+            den$d = den_sel;
+            quo$d = s_zero;
+            count$d = count_first;
+            state$d = st_step;
+            if (phase$q == ph_one) begin
+                mul_x$d = (w_nep$q << sh_one) - p_one;
+                acc_num$d = p_zero;
+                acc_den$d = p_zero;
+                mul_on$d = 1'b1;
+            end
+            if (phase$q == ph_two) begin
+                stage_n1$d = rounded;
+            end
+            if (phase$q == ph_three) begin
+                stage_n2$d = rounded;
+            end
+        end
+        if (state$q == st_step) begin
+            part_rem$d = next_rem;
+            num_shift$d = num_shift$q << sh_one;
+            quo$d = quo$q << sh_one;
+            if (fits) begin
+                quo$d = (quo$q << sh_one) | s_one;
+            end
+            count$d = count$q - count_one;
+            if (mul_on$q) begin
+                mul_x$d = mul_x$q << sh_one;
+                acc_num$d = acc_num$q << sh_one;
+                acc_den$d = acc_den$q << sh_one;
+                if (x_bit) begin
+                    acc_den$d = (acc_den$q << sh_one) + w_ndt$q;
+                    if (count$q != count_mul_last) begin
+                        acc_num$d = (acc_num$q << sh_one) + w_nep$q;
+                    end
+                end
+                if (count$q == count_mul_last) begin
+                    mul_on$d = 1'b0;
+                end
+            end
+            if (count$q == count_zero) begin
+                state$d = st_setup;
+                phase$d = phase$q + ph_one;
+                if (phase$q == ph_three) begin
+                    state$d = st_finish;
+                end
+            end
+        end
+        if (state$q == st_finish) begin
+            out_n1$d = stage_n1$q;
+            out_n2$d = stage_n2$q;
+            out_n3$d = rounded;
+            valid_reg$d = 1'b1;
+            state$d = st_idle;
+        end
+        if (start) begin
+            req_nep$d = nep;
+            req_ndt$d = ndt;
+            req_neg$d = negative;
+            pending$d = 1'b1;
+        end
+        if (reset) begin
+            pending$d = 1'b0;
+            mul_on$d = 1'b0;
+            state$d = st_idle;
+            valid_reg$d = 1'b0;
+            out_n1$d = s_zero;
+            out_n2$d = s_zero;
+            out_n3$d = s_zero;
+        end
+        speed_n1 = out_n1$q;
+        speed_n2 = out_n2$q;
+        speed_n3 = out_n3$q;
+        valid = valid_reg$q;
+        busy = pending$q | (state$q != st_idle);
+    end
+    
+endmodule // encspeed_core$calc
+
+
+module encspeed_core$calc$acc_den(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$acc_den
+
+
+module encspeed_core$calc$acc_num(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$acc_num
+
+
+module encspeed_core$calc$count(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$count
+
+
+module encspeed_core$calc$den(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$den
+
+
+module encspeed_core$calc$mul_on(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$mul_on
+
+
+module encspeed_core$calc$mul_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$mul_x
+
+
+module encspeed_core$calc$num_shift(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$num_shift
+
+
+module encspeed_core$calc$out_n1(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$out_n1
+
+
+module encspeed_core$calc$out_n2(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$out_n2
+
+
+module encspeed_core$calc$out_n3(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$out_n3
+
+
+module encspeed_core$calc$part_rem(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$part_rem
+
+
+module encspeed_core$calc$pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$pending
+
+
+module encspeed_core$calc$phase(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$phase
+
+
+module encspeed_core$calc$quo(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$quo
+
+
+module encspeed_core$calc$req_ndt(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$req_ndt
+
+
+module encspeed_core$calc$req_neg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$req_neg
+
+
+module encspeed_core$calc$req_nep(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$req_nep
+
+
+module encspeed_core$calc$stage_n1(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$stage_n1
+
+
+module encspeed_core$calc$stage_n2(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$stage_n2
+
+
+module encspeed_core$calc$state(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$state
+
+
+module encspeed_core$calc$valid_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$valid_reg
+
+
+module encspeed_core$calc$w_ndt(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$w_ndt
+
+
+module encspeed_core$calc$w_ndt_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$w_ndt_zero
+
+
+module encspeed_core$calc$w_neg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$w_neg
+
+
+module encspeed_core$calc$w_nep(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$w_nep
+
+
+module encspeed_core$calc$w_nep_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$w_nep_zero
+
+
+module encspeed_core$cfg_error_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$cfg_error_reg
+
+
+module encspeed_core$counter(clock,reset,step,forward,z,counts_per_rev,cfg_z_mode,position,z_latch,index,rev_error,rev_error_count,rev_fault);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  step;
+    input wire  forward;
+    input wire  z;
+    input wire  [31:0] counts_per_rev;
+    input wire  [1:0] cfg_z_mode;
+    output reg  [31:0] position;
+    output reg  [31:0] z_latch;
+    output reg  index;
+    output reg  rev_error;
+    output reg  [15:0] rev_error_count;
+    output reg  rev_fault;
+    
+    // Constant declarations
+    localparam  pos_zero = 32'h0;
+    localparam  pos_one = 32'h1;
+    localparam  pos_max = 32'hffffffff;
+    localparam  mode_ignore = 2'b0;
+    localparam  mode_reset = 2'b1;
+    localparam  mode_latch = 2'b10;
+    localparam  mode_both = 2'b11;
+    localparam  count_zero = 16'h0;
+    localparam  count_one = 16'h1;
+    localparam  count_max = 16'hffff;
+    
+    // Stub signals
+    reg  [31:0] position_reg$d;
+    wire  [31:0] position_reg$q;
+    reg  position_reg$clock;
+    reg  [31:0] latch_reg$d;
+    wire  [31:0] latch_reg$q;
+    reg  latch_reg$clock;
+    reg  index_reg$d;
+    wire  index_reg$q;
+    reg  index_reg$clock;
+    reg  z_delay$d;
+    wire  z_delay$q;
+    reg  z_delay$clock;
+    reg  z_prev$d;
+    wire  z_prev$q;
+    reg  z_prev$clock;
+    reg  armed$d;
+    wire  armed$q;
+    reg  armed$clock;
+    reg  rev_any$d;
+    wire  rev_any$q;
+    reg  rev_any$clock;
+    reg  [31:0] rev_more$d;
+    wire  [31:0] rev_more$q;
+    reg  rev_more$clock;
+    reg  rev_over$d;
+    wire  rev_over$q;
+    reg  rev_over$clock;
+    reg  rev_fwd$d;
+    wire  rev_fwd$q;
+    reg  rev_fwd$clock;
+    reg  rev_mixed$d;
+    wire  rev_mixed$q;
+    reg  rev_mixed$clock;
+    reg  error_reg$d;
+    wire  error_reg$q;
+    reg  error_reg$clock;
+    reg  [15:0] error_count$d;
+    wire  [15:0] error_count$q;
+    reg  error_count$clock;
+    reg  fault_reg$d;
+    wire  fault_reg$q;
+    reg  fault_reg$clock;
+    
+    // Local signals
+    reg  [31:0] limit;
+    reg  [31:0] stepped;
+    reg  rise;
+    reg  any_now;
+    reg  [31:0] more_now;
+    reg  over_now;
+    reg  fwd_now;
+    reg  mixed_now;
+    reg  bad;
+    
+    // Sub module instances
+    encspeed_core$counter$position_reg position_reg(
+        .d(position_reg$d),
+        .q(position_reg$q),
+        .clock(position_reg$clock)
+    );
+    encspeed_core$counter$latch_reg latch_reg(
+        .d(latch_reg$d),
+        .q(latch_reg$q),
+        .clock(latch_reg$clock)
+    );
+    encspeed_core$counter$index_reg index_reg(
+        .d(index_reg$d),
+        .q(index_reg$q),
+        .clock(index_reg$clock)
+    );
+    encspeed_core$counter$z_delay z_delay(
+        .d(z_delay$d),
+        .q(z_delay$q),
+        .clock(z_delay$clock)
+    );
+    encspeed_core$counter$z_prev z_prev(
+        .d(z_prev$d),
+        .q(z_prev$q),
+        .clock(z_prev$clock)
+    );
+    encspeed_core$counter$armed armed(
+        .d(armed$d),
+        .q(armed$q),
+        .clock(armed$clock)
+    );
+    encspeed_core$counter$rev_any rev_any(
+        .d(rev_any$d),
+        .q(rev_any$q),
+        .clock(rev_any$clock)
+    );
+    encspeed_core$counter$rev_more rev_more(
+        .d(rev_more$d),
+        .q(rev_more$q),
+        .clock(rev_more$clock)
+    );
+    encspeed_core$counter$rev_over rev_over(
+        .d(rev_over$d),
+        .q(rev_over$q),
+        .clock(rev_over$clock)
+    );
+    encspeed_core$counter$rev_fwd rev_fwd(
+        .d(rev_fwd$d),
+        .q(rev_fwd$q),
+        .clock(rev_fwd$clock)
+    );
+    encspeed_core$counter$rev_mixed rev_mixed(
+        .d(rev_mixed$d),
+        .q(rev_mixed$q),
+        .clock(rev_mixed$clock)
+    );
+    encspeed_core$counter$error_reg error_reg(
+        .d(error_reg$d),
+        .q(error_reg$q),
+        .clock(error_reg$clock)
+    );
+    encspeed_core$counter$error_count error_count(
+        .d(error_count$d),
+        .q(error_count$q),
+        .clock(error_count$clock)
+    );
+    encspeed_core$counter$fault_reg fault_reg(
+        .d(fault_reg$d),
+        .q(fault_reg$q),
+        .clock(fault_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        position_reg$clock = clock;
+        latch_reg$clock = clock;
+        index_reg$clock = clock;
+        z_delay$clock = clock;
+        z_prev$clock = clock;
+        armed$clock = clock;
+        rev_any$clock = clock;
+        rev_more$clock = clock;
+        rev_over$clock = clock;
+        rev_fwd$clock = clock;
+        rev_mixed$clock = clock;
+        error_reg$clock = clock;
+        error_count$clock = clock;
+        fault_reg$clock = clock;
+        position_reg$d = position_reg$q;
+        latch_reg$d = latch_reg$q;
+        index_reg$d = index_reg$q;
+        z_delay$d = z_delay$q;
+        z_prev$d = z_prev$q;
+        armed$d = armed$q;
+        rev_any$d = rev_any$q;
+        rev_more$d = rev_more$q;
+        rev_over$d = rev_over$q;
+        rev_fwd$d = rev_fwd$q;
+        rev_mixed$d = rev_mixed$q;
+        error_reg$d = error_reg$q;
+        error_count$d = error_count$q;
+        fault_reg$d = fault_reg$q;
+        limit = counts_per_rev - pos_one;
+        rise = z_delay$q & ~z_prev$q;
+        z_delay$d = z;
+        z_prev$d = z_delay$q;
+        stepped = position_reg$q;
+        if (step & forward) begin
+            if (position_reg$q >= limit) begin
+                stepped = pos_zero;
+            end
+            else begin
+                stepped = position_reg$q + pos_one;
+            end
+        end
+        if (step & ~forward) begin
+            if ((position_reg$q == pos_zero) | (position_reg$q > limit)) begin
+                stepped = limit;
+            end
+            else begin
+                stepped = position_reg$q - pos_one;
+            end
+        end
+        any_now = rev_any$q;
+        more_now = rev_more$q;
+        over_now = rev_over$q;
+        fwd_now = rev_fwd$q;
+        mixed_now = rev_mixed$q;
+        if (step) begin
+            if (rev_any$q) begin
+                if (rev_more$q == pos_max) begin
+                    over_now = 1'b1;
+                end
+                else begin
+                    more_now = rev_more$q + pos_one;
+                end
+                if (forward ^ rev_fwd$q) begin
+                    mixed_now = 1'b1;
+                end
+            end
+            else begin
+                any_now = 1'b1;
+                more_now = pos_zero;
+                over_now = 1'b0;
+                fwd_now = forward;
+                mixed_now = 1'b0;
+            end
+        end
+        bad = armed$q & (cfg_z_mode != mode_ignore) & any_now & ~mixed_now & (over_now | (more_now != limit));
+        position_reg$d = stepped;
+        index_reg$d = rise;
+        fault_reg$d = 1'b0;
+        rev_any$d = any_now;
+        rev_more$d = more_now;
+        rev_over$d = over_now;
+        rev_fwd$d = fwd_now;
+        rev_mixed$d = mixed_now;
+        if (rise) begin
+            if ((cfg_z_mode == mode_latch) | (cfg_z_mode == mode_both)) begin
+                latch_reg$d = stepped;
+            end
+            if ((cfg_z_mode == mode_reset) | (cfg_z_mode == mode_both)) begin
+                position_reg$d = pos_zero;
+            end
+            if (bad) begin
+                error_reg$d = 1'b1;
+                fault_reg$d = 1'b1;
+                if (error_count$q != count_max) begin
+                    error_count$d = error_count$q + count_one;
+                end
+            end
+            armed$d = 1'b1;
+            rev_any$d = 1'b0;
+            rev_more$d = pos_zero;
+            rev_over$d = 1'b0;
+            rev_mixed$d = 1'b0;
+        end
+        if (reset) begin
+            position_reg$d = pos_zero;
+            latch_reg$d = pos_zero;
+            index_reg$d = 1'b0;
+            z_delay$d = 1'b1;
+            z_prev$d = 1'b1;
+            armed$d = 1'b0;
+            rev_any$d = 1'b0;
+            rev_more$d = pos_zero;
+            rev_over$d = 1'b0;
+            rev_fwd$d = 1'b0;
+            rev_mixed$d = 1'b0;
+            error_reg$d = 1'b0;
+            error_count$d = count_zero;
+            fault_reg$d = 1'b0;
+        end
+        position = position_reg$q;
+        z_latch = latch_reg$q;
+        index = index_reg$q;
+        rev_error = error_reg$q;
+        rev_error_count = error_count$q;
+        rev_fault = fault_reg$q;
+    end
+    
+endmodule // encspeed_core$counter
+
+
+module encspeed_core$counter$armed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$armed
+
+
+module encspeed_core$counter$error_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$error_count
+
+
+module encspeed_core$counter$error_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$error_reg
+
+
+module encspeed_core$counter$fault_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$fault_reg
+
+
+module encspeed_core$counter$index_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$index_reg
+
+
+module encspeed_core$counter$latch_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$latch_reg
+
+
+module encspeed_core$counter$position_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$position_reg
+
+
+module encspeed_core$counter$rev_any(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$rev_any
+
+
+module encspeed_core$counter$rev_fwd(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$rev_fwd
+
+
+module encspeed_core$counter$rev_mixed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$rev_mixed
+
+
+module encspeed_core$counter$rev_more(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$rev_more
+
+
+module encspeed_core$counter$rev_over(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$rev_over
+
+
+module encspeed_core$counter$z_delay(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$z_delay
+
+
+module encspeed_core$counter$z_prev(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$counter$z_prev
+
+
+module encspeed_core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction,illegal,illegal_seen,illegal_count,mode_error);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  a;
+    input wire  b;
+    input wire  [1:0] cfg_mode;
+    output reg  step;
+    output reg  forward;
+    output reg  direction;
+    output reg  illegal;
+    output reg  illegal_seen;
+    output reg  [15:0] illegal_count;
+    output reg  mode_error;
+    
+    // Constant declarations
+    localparam  mode_x1 = 2'b0;
+    localparam  mode_x2 = 2'b1;
+    localparam  mode_invalid = 2'b11;
+    localparam  count_zero = 16'h0;
+    localparam  count_one = 16'h1;
+    localparam  count_max = 16'hffff;
+    
+    // Stub signals
+    reg  a_prev$d;
+    wire  a_prev$q;
+    reg  a_prev$clock;
+    reg  b_prev$d;
+    wire  b_prev$q;
+    reg  b_prev$clock;
+    reg  primed$d;
+    wire  primed$q;
+    reg  primed$clock;
+    reg  step_reg$d;
+    wire  step_reg$q;
+    reg  step_reg$clock;
+    reg  forward_reg$d;
+    wire  forward_reg$q;
+    reg  forward_reg$clock;
+    reg  direction_reg$d;
+    wire  direction_reg$q;
+    reg  direction_reg$clock;
+    reg  illegal_reg$d;
+    wire  illegal_reg$q;
+    reg  illegal_reg$clock;
+    reg  seen_reg$d;
+    wire  seen_reg$q;
+    reg  seen_reg$clock;
+    reg  [15:0] count_reg$d;
+    wire  [15:0] count_reg$q;
+    reg  count_reg$clock;
+    
+    // Local signals
+    reg  da;
+    reg  db;
+    reg  moved;
+    reg  step_now;
+    reg  illegal_now;
+    reg  forward_now;
+    
+    // Sub module instances
+    encspeed_core$decoder$a_prev a_prev(
+        .d(a_prev$d),
+        .q(a_prev$q),
+        .clock(a_prev$clock)
+    );
+    encspeed_core$decoder$b_prev b_prev(
+        .d(b_prev$d),
+        .q(b_prev$q),
+        .clock(b_prev$clock)
+    );
+    encspeed_core$decoder$primed primed(
+        .d(primed$d),
+        .q(primed$q),
+        .clock(primed$clock)
+    );
+    encspeed_core$decoder$step_reg step_reg(
+        .d(step_reg$d),
+        .q(step_reg$q),
+        .clock(step_reg$clock)
+    );
+    encspeed_core$decoder$forward_reg forward_reg(
+        .d(forward_reg$d),
+        .q(forward_reg$q),
+        .clock(forward_reg$clock)
+    );
+    encspeed_core$decoder$direction_reg direction_reg(
+        .d(direction_reg$d),
+        .q(direction_reg$q),
+        .clock(direction_reg$clock)
+    );
+    encspeed_core$decoder$illegal_reg illegal_reg(
+        .d(illegal_reg$d),
+        .q(illegal_reg$q),
+        .clock(illegal_reg$clock)
+    );
+    encspeed_core$decoder$seen_reg seen_reg(
+        .d(seen_reg$d),
+        .q(seen_reg$q),
+        .clock(seen_reg$clock)
+    );
+    encspeed_core$decoder$count_reg count_reg(
+        .d(count_reg$d),
+        .q(count_reg$q),
+        .clock(count_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        a_prev$clock = clock;
+        b_prev$clock = clock;
+        primed$clock = clock;
+        step_reg$clock = clock;
+        forward_reg$clock = clock;
+        direction_reg$clock = clock;
+        illegal_reg$clock = clock;
+        seen_reg$clock = clock;
+        count_reg$clock = clock;
+        a_prev$d = a_prev$q;
+        b_prev$d = b_prev$q;
+        primed$d = primed$q;
+        step_reg$d = step_reg$q;
+        forward_reg$d = forward_reg$q;
+        direction_reg$d = direction_reg$q;
+        illegal_reg$d = illegal_reg$q;
+        seen_reg$d = seen_reg$q;
+        count_reg$d = count_reg$q;
+        da = a ^ a_prev$q;
+        db = b ^ b_prev$q;
+        moved = da ^ db;
+        if (cfg_mode == mode_x2) begin
+            moved = da & ~db;
+        end
+        if (cfg_mode == mode_x1) begin
+            moved = da & ~db & ~b;
+        end
+        step_now = primed$q & moved;
+        illegal_now = primed$q & da & db;
+        forward_now = ~(a_prev$q ^ b);
+        a_prev$d = a;
+        b_prev$d = b;
+        primed$d = 1'b1;
+        step_reg$d = step_now;
+        forward_reg$d = step_now & forward_now;
+        if (step_now) begin
+            direction_reg$d = forward_now;
+        end
+        illegal_reg$d = illegal_now;
+        if (illegal_now) begin
+            seen_reg$d = 1'b1;
+            if (count_reg$q != count_max) begin
+                count_reg$d = count_reg$q + count_one;
+            end
+        end
+        if (reset) begin
+            a_prev$d = 1'b0;
+            b_prev$d = 1'b0;
+            primed$d = 1'b0;
+            step_reg$d = 1'b0;
+            forward_reg$d = 1'b0;
+            direction_reg$d = 1'b0;
+            illegal_reg$d = 1'b0;
+            seen_reg$d = 1'b0;
+            count_reg$d = count_zero;
+        end
+        step = step_reg$q;
+        forward = forward_reg$q;
+        direction = direction_reg$q;
+        illegal = illegal_reg$q;
+        illegal_seen = seen_reg$q;
+        illegal_count = count_reg$q;
+        mode_error = cfg_mode == mode_invalid;
+    end
+    
+endmodule // encspeed_core$decoder
+
+
+module encspeed_core$decoder$a_prev(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$a_prev
+
+
+module encspeed_core$decoder$b_prev(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$b_prev
+
+
+module encspeed_core$decoder$count_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$count_reg
+
+
+module encspeed_core$decoder$direction_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$direction_reg
+
+
+module encspeed_core$decoder$forward_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$forward_reg
+
+
+module encspeed_core$decoder$illegal_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$illegal_reg
+
+
+module encspeed_core$decoder$primed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$primed
+
+
+module encspeed_core$decoder$seen_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$seen_reg
+
+
+module encspeed_core$decoder$step_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$decoder$step_reg
+
+
+module encspeed_core$dt_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$dt_reg
+
+
+module encspeed_core$et(clock,reset,step,forward,period,negative,strobe,stalled);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  step;
+    input wire  forward;
+    output reg  [23:0] period;
+    output reg  negative;
+    output reg  strobe;
+    output reg  stalled;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  max = 24'hffffff;
+    
+    // Stub signals
+    reg  [23:0] elapsed$d;
+    wire  [23:0] elapsed$q;
+    reg  elapsed$clock;
+    reg  armed$d;
+    wire  armed$q;
+    reg  armed$clock;
+    reg  dir$d;
+    wire  dir$q;
+    reg  dir$clock;
+    reg  [23:0] period_reg$d;
+    wire  [23:0] period_reg$q;
+    reg  period_reg$clock;
+    reg  neg_reg$d;
+    wire  neg_reg$q;
+    reg  neg_reg$clock;
+    reg  strobe_reg$d;
+    wire  strobe_reg$q;
+    reg  strobe_reg$clock;
+    
+    // Local signals
+    reg  [23:0] e_inc;
+    
+    // Sub module instances
+    encspeed_core$et$elapsed elapsed(
+        .d(elapsed$d),
+        .q(elapsed$q),
+        .clock(elapsed$clock)
+    );
+    encspeed_core$et$armed armed(
+        .d(armed$d),
+        .q(armed$q),
+        .clock(armed$clock)
+    );
+    encspeed_core$et$dir dir(
+        .d(dir$d),
+        .q(dir$q),
+        .clock(dir$clock)
+    );
+    encspeed_core$et$period_reg period_reg(
+        .d(period_reg$d),
+        .q(period_reg$q),
+        .clock(period_reg$clock)
+    );
+    encspeed_core$et$neg_reg neg_reg(
+        .d(neg_reg$d),
+        .q(neg_reg$q),
+        .clock(neg_reg$clock)
+    );
+    encspeed_core$et$strobe_reg strobe_reg(
+        .d(strobe_reg$d),
+        .q(strobe_reg$q),
+        .clock(strobe_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        elapsed$clock = clock;
+        armed$clock = clock;
+        dir$clock = clock;
+        period_reg$clock = clock;
+        neg_reg$clock = clock;
+        strobe_reg$clock = clock;
+        elapsed$d = elapsed$q;
+        armed$d = armed$q;
+        dir$d = dir$q;
+        period_reg$d = period_reg$q;
+        neg_reg$d = neg_reg$q;
+        strobe_reg$d = strobe_reg$q;
+        e_inc = elapsed$q + one;
+        if (elapsed$q == max) begin
+            e_inc = max;
+        end
+        strobe_reg$d = 1'b0;
+        elapsed$d = e_inc;
+        if (step) begin
+            if (armed$q & ~(forward ^ dir$q)) begin
+                period_reg$d = e_inc;
+                neg_reg$d = ~forward;
+                strobe_reg$d = 1'b1;
+            end
+            armed$d = 1'b1;
+            dir$d = forward;
+            elapsed$d = zero;
+        end
+        if (reset) begin
+            elapsed$d = zero;
+            armed$d = 1'b0;
+            dir$d = 1'b0;
+            period_reg$d = zero;
+            neg_reg$d = 1'b0;
+            strobe_reg$d = 1'b0;
+        end
+        period = period_reg$q;
+        negative = neg_reg$q;
+        strobe = strobe_reg$q;
+        stalled = elapsed$q == max;
+    end
+    
+endmodule // encspeed_core$et
+
+
+module encspeed_core$et$armed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$et$armed
+
+
+module encspeed_core$et$dir(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$et$dir
+
+
+module encspeed_core$et$elapsed(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$et$elapsed
+
+
+module encspeed_core$et$neg_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$et$neg_reg
+
+
+module encspeed_core$et$period_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$et$period_reg
+
+
+module encspeed_core$et$strobe_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$et$strobe_reg
+
+
+module encspeed_core$et_have(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$et_have
+
+
+module encspeed_core$faults(clock,reset,clear_faults,illegal,rejected_a,rejected_b,rejected_z,rev_fault,fault_illegal,fault_overspeed,fault_revolution,glitch_count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  clear_faults;
+    input wire  illegal;
+    input wire  rejected_a;
+    input wire  rejected_b;
+    input wire  rejected_z;
+    input wire  rev_fault;
+    output reg  fault_illegal;
+    output reg  fault_overspeed;
+    output reg  fault_revolution;
+    output reg  [15:0] glitch_count;
+    
+    // Constant declarations
+    localparam  zero = 16'h0;
+    localparam  one = 16'h1;
+    localparam  max = 16'hffff;
+    
+    // Stub signals
+    reg  illegal_reg$d;
+    wire  illegal_reg$q;
+    reg  illegal_reg$clock;
+    reg  overspeed_reg$d;
+    wire  overspeed_reg$q;
+    reg  overspeed_reg$clock;
+    reg  revolution_reg$d;
+    wire  revolution_reg$q;
+    reg  revolution_reg$clock;
+    reg  [15:0] count$d;
+    wire  [15:0] count$q;
+    reg  count$clock;
+    
+    // Local signals
+    reg  [15:0] count_wide;
+    reg  [15:0] sum;
+    reg  [15:0] ab;
+    
+    // Sub module instances
+    encspeed_core$faults$illegal_reg illegal_reg(
+        .d(illegal_reg$d),
+        .q(illegal_reg$q),
+        .clock(illegal_reg$clock)
+    );
+    encspeed_core$faults$overspeed_reg overspeed_reg(
+        .d(overspeed_reg$d),
+        .q(overspeed_reg$q),
+        .clock(overspeed_reg$clock)
+    );
+    encspeed_core$faults$revolution_reg revolution_reg(
+        .d(revolution_reg$d),
+        .q(revolution_reg$q),
+        .clock(revolution_reg$clock)
+    );
+    encspeed_core$faults$count count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        illegal_reg$clock = clock;
+        overspeed_reg$clock = clock;
+        revolution_reg$clock = clock;
+        count$clock = clock;
+        illegal_reg$d = illegal_reg$q;
+        overspeed_reg$d = overspeed_reg$q;
+        revolution_reg$d = revolution_reg$q;
+        count$d = count$q;
+        illegal_reg$d = (illegal_reg$q & ~clear_faults) | illegal;
+        overspeed_reg$d = (overspeed_reg$q & ~clear_faults) | rejected_a | rejected_b;
+        revolution_reg$d = (revolution_reg$q & ~clear_faults) | rev_fault;
+        count_wide = count$q;
+        if (rejected_a & (count_wide != max)) begin
+            count_wide = count$q + one;
+        end
+        ab = count_wide;
+        if (rejected_b & (count_wide != max)) begin
+            ab = count_wide + one;
+        end
+        sum = ab;
+        if (rejected_z & (ab != max)) begin
+            sum = ab + one;
+        end
+        count$d = sum;
+        if (reset) begin
+            illegal_reg$d = 1'b0;
+            overspeed_reg$d = 1'b0;
+            revolution_reg$d = 1'b0;
+            count$d = zero;
+        end
+        fault_illegal = illegal_reg$q;
+        fault_overspeed = overspeed_reg$q;
+        fault_revolution = revolution_reg$q;
+        glitch_count = count$q;
+    end
+    
+endmodule // encspeed_core$faults
+
+
+module encspeed_core$faults$count(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$faults$count
+
+
+module encspeed_core$faults$illegal_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$faults$illegal_reg
+
+
+module encspeed_core$faults$overspeed_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$faults$overspeed_reg
+
+
+module encspeed_core$faults$revolution_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$faults$revolution_reg
+
+
+module encspeed_core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  level_in;
+    input wire  [15:0] cfg_filter;
+    output reg  level_out;
+    output reg  [15:0] glitches;
+    output reg  rejected;
+    
+    // Constant declarations
+    localparam  run_zero = 16'h0;
+    localparam  run_one = 16'h1;
+    localparam  count_zero = 16'h0;
+    localparam  count_one = 16'h1;
+    localparam  count_max = 16'hffff;
+    
+    // Stub signals
+    reg  filtered$d;
+    wire  filtered$q;
+    reg  filtered$clock;
+    reg  rejected_reg$d;
+    wire  rejected_reg$q;
+    reg  rejected_reg$clock;
+    reg  [15:0] run$d;
+    wire  [15:0] run$q;
+    reg  run$clock;
+    reg  [15:0] glitch_count$d;
+    wire  [15:0] glitch_count$q;
+    reg  glitch_count$clock;
+    
+    // Local signals
+    reg  differs;
+    reg  [15:0] run_next;
+    
+    // Sub module instances
+    encspeed_core$filter_a$filtered filtered(
+        .d(filtered$d),
+        .q(filtered$q),
+        .clock(filtered$clock)
+    );
+    encspeed_core$filter_a$rejected_reg rejected_reg(
+        .d(rejected_reg$d),
+        .q(rejected_reg$q),
+        .clock(rejected_reg$clock)
+    );
+    encspeed_core$filter_a$run run(
+        .d(run$d),
+        .q(run$q),
+        .clock(run$clock)
+    );
+    encspeed_core$filter_a$glitch_count glitch_count(
+        .d(glitch_count$d),
+        .q(glitch_count$q),
+        .clock(glitch_count$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        filtered$clock = clock;
+        run$clock = clock;
+        glitch_count$clock = clock;
+        rejected_reg$clock = clock;
+        filtered$d = filtered$q;
+        run$d = run$q;
+        glitch_count$d = glitch_count$q;
+        rejected_reg$d = rejected_reg$q;
+        differs = level_in ^ filtered$q;
+        run_next = run$q + run_one;
+        run$d = run_zero;
+        rejected_reg$d = 1'b0;
+        if (differs) begin
+            if (run_next >= cfg_filter) begin
+                filtered$d = level_in;
+            end
+            else begin
+                run$d = run_next;
+            end
+        end
+        else if (run$q != run_zero) begin
+            rejected_reg$d = 1'b1;
+            if (glitch_count$q != count_max) begin
+                glitch_count$d = glitch_count$q + count_one;
+            end
+        end
+        if (reset) begin
+            filtered$d = 1'b0;
+            run$d = run_zero;
+            glitch_count$d = count_zero;
+            rejected_reg$d = 1'b0;
+        end
+        level_out = filtered$q;
+        rejected = rejected_reg$q;
+        glitches = glitch_count$q;
+    end
+    
+endmodule // encspeed_core$filter_a
+
+
+module encspeed_core$filter_a$filtered(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_a$filtered
+
+
+module encspeed_core$filter_a$glitch_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_a$glitch_count
+
+
+module encspeed_core$filter_a$rejected_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_a$rejected_reg
+
+
+module encspeed_core$filter_a$run(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_a$run
+
+
+module encspeed_core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  level_in;
+    input wire  [15:0] cfg_filter;
+    output reg  level_out;
+    output reg  [15:0] glitches;
+    output reg  rejected;
+    
+    // Constant declarations
+    localparam  run_zero = 16'h0;
+    localparam  run_one = 16'h1;
+    localparam  count_zero = 16'h0;
+    localparam  count_one = 16'h1;
+    localparam  count_max = 16'hffff;
+    
+    // Stub signals
+    reg  filtered$d;
+    wire  filtered$q;
+    reg  filtered$clock;
+    reg  rejected_reg$d;
+    wire  rejected_reg$q;
+    reg  rejected_reg$clock;
+    reg  [15:0] run$d;
+    wire  [15:0] run$q;
+    reg  run$clock;
+    reg  [15:0] glitch_count$d;
+    wire  [15:0] glitch_count$q;
+    reg  glitch_count$clock;
+    
+    // Local signals
+    reg  differs;
+    reg  [15:0] run_next;
+    
+    // Sub module instances
+    encspeed_core$filter_b$filtered filtered(
+        .d(filtered$d),
+        .q(filtered$q),
+        .clock(filtered$clock)
+    );
+    encspeed_core$filter_b$rejected_reg rejected_reg(
+        .d(rejected_reg$d),
+        .q(rejected_reg$q),
+        .clock(rejected_reg$clock)
+    );
+    encspeed_core$filter_b$run run(
+        .d(run$d),
+        .q(run$q),
+        .clock(run$clock)
+    );
+    encspeed_core$filter_b$glitch_count glitch_count(
+        .d(glitch_count$d),
+        .q(glitch_count$q),
+        .clock(glitch_count$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        filtered$clock = clock;
+        run$clock = clock;
+        glitch_count$clock = clock;
+        rejected_reg$clock = clock;
+        filtered$d = filtered$q;
+        run$d = run$q;
+        glitch_count$d = glitch_count$q;
+        rejected_reg$d = rejected_reg$q;
+        differs = level_in ^ filtered$q;
+        run_next = run$q + run_one;
+        run$d = run_zero;
+        rejected_reg$d = 1'b0;
+        if (differs) begin
+            if (run_next >= cfg_filter) begin
+                filtered$d = level_in;
+            end
+            else begin
+                run$d = run_next;
+            end
+        end
+        else if (run$q != run_zero) begin
+            rejected_reg$d = 1'b1;
+            if (glitch_count$q != count_max) begin
+                glitch_count$d = glitch_count$q + count_one;
+            end
+        end
+        if (reset) begin
+            filtered$d = 1'b0;
+            run$d = run_zero;
+            glitch_count$d = count_zero;
+            rejected_reg$d = 1'b0;
+        end
+        level_out = filtered$q;
+        rejected = rejected_reg$q;
+        glitches = glitch_count$q;
+    end
+    
+endmodule // encspeed_core$filter_b
+
+
+module encspeed_core$filter_b$filtered(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_b$filtered
+
+
+module encspeed_core$filter_b$glitch_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_b$glitch_count
+
+
+module encspeed_core$filter_b$rejected_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_b$rejected_reg
+
+
+module encspeed_core$filter_b$run(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_b$run
+
+
+module encspeed_core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  level_in;
+    input wire  [15:0] cfg_filter;
+    output reg  level_out;
+    output reg  [15:0] glitches;
+    output reg  rejected;
+    
+    // Constant declarations
+    localparam  run_zero = 16'h0;
+    localparam  run_one = 16'h1;
+    localparam  count_zero = 16'h0;
+    localparam  count_one = 16'h1;
+    localparam  count_max = 16'hffff;
+    
+    // Stub signals
+    reg  filtered$d;
+    wire  filtered$q;
+    reg  filtered$clock;
+    reg  rejected_reg$d;
+    wire  rejected_reg$q;
+    reg  rejected_reg$clock;
+    reg  [15:0] run$d;
+    wire  [15:0] run$q;
+    reg  run$clock;
+    reg  [15:0] glitch_count$d;
+    wire  [15:0] glitch_count$q;
+    reg  glitch_count$clock;
+    
+    // Local signals
+    reg  differs;
+    reg  [15:0] run_next;
+    
+    // Sub module instances
+    encspeed_core$filter_z$filtered filtered(
+        .d(filtered$d),
+        .q(filtered$q),
+        .clock(filtered$clock)
+    );
+    encspeed_core$filter_z$rejected_reg rejected_reg(
+        .d(rejected_reg$d),
+        .q(rejected_reg$q),
+        .clock(rejected_reg$clock)
+    );
+    encspeed_core$filter_z$run run(
+        .d(run$d),
+        .q(run$q),
+        .clock(run$clock)
+    );
+    encspeed_core$filter_z$glitch_count glitch_count(
+        .d(glitch_count$d),
+        .q(glitch_count$q),
+        .clock(glitch_count$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        filtered$clock = clock;
+        run$clock = clock;
+        glitch_count$clock = clock;
+        rejected_reg$clock = clock;
+        filtered$d = filtered$q;
+        run$d = run$q;
+        glitch_count$d = glitch_count$q;
+        rejected_reg$d = rejected_reg$q;
+        differs = level_in ^ filtered$q;
+        run_next = run$q + run_one;
+        run$d = run_zero;
+        rejected_reg$d = 1'b0;
+        if (differs) begin
+            if (run_next >= cfg_filter) begin
+                filtered$d = level_in;
+            end
+            else begin
+                run$d = run_next;
+            end
+        end
+        else if (run$q != run_zero) begin
+            rejected_reg$d = 1'b1;
+            if (glitch_count$q != count_max) begin
+                glitch_count$d = glitch_count$q + count_one;
+            end
+        end
+        if (reset) begin
+            filtered$d = 1'b0;
+            run$d = run_zero;
+            glitch_count$d = count_zero;
+            rejected_reg$d = 1'b0;
+        end
+        level_out = filtered$q;
+        rejected = rejected_reg$q;
+        glitches = glitch_count$q;
+    end
+    
+endmodule // encspeed_core$filter_z
+
+
+module encspeed_core$filter_z$filtered(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_z$filtered
+
+
+module encspeed_core$filter_z$glitch_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_z$glitch_count
+
+
+module encspeed_core$filter_z$rejected_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_z$rejected_reg
+
+
+module encspeed_core$filter_z$run(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_z$run
+
+
+module encspeed_core$have_dir(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$have_dir
+
+
+module encspeed_core$hold(clock,clear,load,n1_in,n2_in,n3_in,n1,n2,n3,strobe,have_speed);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  clear;
+    input wire  load;
+    input wire  [40:0] n1_in;
+    input wire  [40:0] n2_in;
+    input wire  [40:0] n3_in;
+    output reg  [40:0] n1;
+    output reg  [40:0] n2;
+    output reg  [40:0] n3;
+    output reg  strobe;
+    output reg  have_speed;
+    
+    // Constant declarations
+    localparam  zero = 41'h0;
+    
+    // Stub signals
+    reg  [40:0] n1_reg$d;
+    wire  [40:0] n1_reg$q;
+    reg  n1_reg$clock;
+    reg  [40:0] n2_reg$d;
+    wire  [40:0] n2_reg$q;
+    reg  n2_reg$clock;
+    reg  [40:0] n3_reg$d;
+    wire  [40:0] n3_reg$q;
+    reg  n3_reg$clock;
+    reg  strobe_reg$d;
+    wire  strobe_reg$q;
+    reg  strobe_reg$clock;
+    reg  have_reg$d;
+    wire  have_reg$q;
+    reg  have_reg$clock;
+    
+    // Sub module instances
+    encspeed_core$hold$n1_reg n1_reg(
+        .d(n1_reg$d),
+        .q(n1_reg$q),
+        .clock(n1_reg$clock)
+    );
+    encspeed_core$hold$n2_reg n2_reg(
+        .d(n2_reg$d),
+        .q(n2_reg$q),
+        .clock(n2_reg$clock)
+    );
+    encspeed_core$hold$n3_reg n3_reg(
+        .d(n3_reg$d),
+        .q(n3_reg$q),
+        .clock(n3_reg$clock)
+    );
+    encspeed_core$hold$strobe_reg strobe_reg(
+        .d(strobe_reg$d),
+        .q(strobe_reg$q),
+        .clock(strobe_reg$clock)
+    );
+    encspeed_core$hold$have_reg have_reg(
+        .d(have_reg$d),
+        .q(have_reg$q),
+        .clock(have_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        n1_reg$clock = clock;
+        n2_reg$clock = clock;
+        n3_reg$clock = clock;
+        strobe_reg$clock = clock;
+        have_reg$clock = clock;
+        n1_reg$d = n1_reg$q;
+        n2_reg$d = n2_reg$q;
+        n3_reg$d = n3_reg$q;
+        strobe_reg$d = strobe_reg$q;
+        have_reg$d = have_reg$q;
+        strobe_reg$d = load;
+        if (load) begin
+            n1_reg$d = n1_in;
+            n2_reg$d = n2_in;
+            n3_reg$d = n3_in;
+            have_reg$d = 1'b1;
+        end
+        if (clear) begin
+            n1_reg$d = zero;
+            n2_reg$d = zero;
+            n3_reg$d = zero;
+            strobe_reg$d = 1'b0;
+            have_reg$d = 1'b0;
+        end
+        n1 = n1_reg$q;
+        n2 = n2_reg$q;
+        n3 = n3_reg$q;
+        strobe = strobe_reg$q;
+        have_speed = have_reg$q;
+    end
+    
+endmodule // encspeed_core$hold
+
+
+module encspeed_core$hold$have_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$hold$have_reg
+
+
+module encspeed_core$hold$n1_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$hold$n1_reg
+
+
+module encspeed_core$hold$n2_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$hold$n2_reg
+
+
+module encspeed_core$hold$n3_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$hold$n3_reg
+
+
+module encspeed_core$hold$strobe_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$hold$strobe_reg
+
+
+module encspeed_core$last_dir(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$last_dir
+
+
+module encspeed_core$mode_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mode_reg
+
+
+module encspeed_core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,stalled);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  step;
+    input wire  forward;
+    input wire  [23:0] cfg_dt;
+    output reg  [23:0] m;
+    output reg  [23:0] t;
+    output reg  negative;
+    output reg  strobe;
+    output reg  stalled;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  max = 24'hffffff;
+    
+    // Stub signals
+    reg  [23:0] phase$d;
+    wire  [23:0] phase$q;
+    reg  phase$clock;
+    reg  anchored$d;
+    wire  anchored$q;
+    reg  anchored$clock;
+    reg  have_dir$d;
+    wire  have_dir$q;
+    reg  have_dir$clock;
+    reg  dir$d;
+    wire  dir$q;
+    reg  dir$clock;
+    reg  [23:0] m_count$d;
+    wire  [23:0] m_count$q;
+    reg  m_count$clock;
+    reg  [23:0] age$d;
+    wire  [23:0] age$q;
+    reg  age$clock;
+    reg  [23:0] span$d;
+    wire  [23:0] span$q;
+    reg  span$clock;
+    reg  [23:0] last$d;
+    wire  [23:0] last$q;
+    reg  last$clock;
+    reg  [23:0] m_reg$d;
+    wire  [23:0] m_reg$q;
+    reg  m_reg$clock;
+    reg  [23:0] t_reg$d;
+    wire  [23:0] t_reg$q;
+    reg  t_reg$clock;
+    reg  neg_reg$d;
+    wire  neg_reg$q;
+    reg  neg_reg$clock;
+    reg  strobe_reg$d;
+    wire  strobe_reg$q;
+    reg  strobe_reg$clock;
+    
+    // Local signals
+    reg  [23:0] dt_limit;
+    reg  tick;
+    reg  rev;
+    reg  cont;
+    reg  [23:0] m_inc;
+    reg  [23:0] age_inc;
+    reg  [23:0] last_inc;
+    reg  [23:0] m_now;
+    reg  [23:0] span_now;
+    reg  [23:0] last_now;
+    
+    // Sub module instances
+    encspeed_core$mt$phase phase(
+        .d(phase$d),
+        .q(phase$q),
+        .clock(phase$clock)
+    );
+    encspeed_core$mt$anchored anchored(
+        .d(anchored$d),
+        .q(anchored$q),
+        .clock(anchored$clock)
+    );
+    encspeed_core$mt$have_dir have_dir(
+        .d(have_dir$d),
+        .q(have_dir$q),
+        .clock(have_dir$clock)
+    );
+    encspeed_core$mt$dir dir(
+        .d(dir$d),
+        .q(dir$q),
+        .clock(dir$clock)
+    );
+    encspeed_core$mt$m_count m_count(
+        .d(m_count$d),
+        .q(m_count$q),
+        .clock(m_count$clock)
+    );
+    encspeed_core$mt$age age(
+        .d(age$d),
+        .q(age$q),
+        .clock(age$clock)
+    );
+    encspeed_core$mt$span span(
+        .d(span$d),
+        .q(span$q),
+        .clock(span$clock)
+    );
+    encspeed_core$mt$last last(
+        .d(last$d),
+        .q(last$q),
+        .clock(last$clock)
+    );
+    encspeed_core$mt$m_reg m_reg(
+        .d(m_reg$d),
+        .q(m_reg$q),
+        .clock(m_reg$clock)
+    );
+    encspeed_core$mt$t_reg t_reg(
+        .d(t_reg$d),
+        .q(t_reg$q),
+        .clock(t_reg$clock)
+    );
+    encspeed_core$mt$neg_reg neg_reg(
+        .d(neg_reg$d),
+        .q(neg_reg$q),
+        .clock(neg_reg$clock)
+    );
+    encspeed_core$mt$strobe_reg strobe_reg(
+        .d(strobe_reg$d),
+        .q(strobe_reg$q),
+        .clock(strobe_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        phase$clock = clock;
+        anchored$clock = clock;
+        have_dir$clock = clock;
+        dir$clock = clock;
+        m_count$clock = clock;
+        age$clock = clock;
+        span$clock = clock;
+        last$clock = clock;
+        m_reg$clock = clock;
+        t_reg$clock = clock;
+        neg_reg$clock = clock;
+        strobe_reg$clock = clock;
+        phase$d = phase$q;
+        anchored$d = anchored$q;
+        have_dir$d = have_dir$q;
+        dir$d = dir$q;
+        m_count$d = m_count$q;
+        age$d = age$q;
+        span$d = span$q;
+        last$d = last$q;
+        m_reg$d = m_reg$q;
+        t_reg$d = t_reg$q;
+        neg_reg$d = neg_reg$q;
+        strobe_reg$d = strobe_reg$q;
+        dt_limit = cfg_dt - one;
+        if (cfg_dt == zero) begin
+            dt_limit = zero;
+        end
+        tick = phase$q >= dt_limit;
+        phase$d = phase$q + one;
+        if (tick) begin
+            phase$d = zero;
+        end
+        m_inc = m_count$q + one;
+        if (m_count$q == max) begin
+            m_inc = max;
+        end
+        age_inc = age$q + one;
+        if (age$q == max) begin
+            age_inc = max;
+        end
+        last_inc = last$q + one;
+        if (last$q == max) begin
+            last_inc = max;
+        end
+        rev = step & have_dir$q & (forward ^ dir$q);
+        cont = step & ~rev;
+        m_now = m_count$q;
+        span_now = span$q;
+        last_now = last_inc;
+        if (cont) begin
+            m_now = m_inc;
+            span_now = age_inc;
+            last_now = zero;
+        end
+        strobe_reg$d = tick & anchored$q;
+        m_count$d = m_now;
+        span$d = span_now;
+        age$d = age_inc;
+        if (tick) begin
+            if (anchored$q) begin
+                m_reg$d = m_now;
+                t_reg$d = last_now;
+                if (m_now != zero) begin
+                    t_reg$d = span_now;
+                end
+                neg_reg$d = ~dir$q;
+            end
+            m_count$d = zero;
+            span$d = zero;
+            if (m_now != zero) begin
+                anchored$d = 1'b1;
+                age$d = last_now;
+            end
+        end
+        last$d = last_now;
+        if (rev) begin
+            anchored$d = 1'b1;
+            m_count$d = zero;
+            age$d = zero;
+            span$d = zero;
+            last$d = zero;
+        end
+        if (step) begin
+            have_dir$d = 1'b1;
+            dir$d = forward;
+        end
+        if (reset) begin
+            phase$d = zero;
+            anchored$d = 1'b0;
+            have_dir$d = 1'b0;
+            dir$d = 1'b0;
+            m_count$d = zero;
+            age$d = zero;
+            span$d = zero;
+            last$d = zero;
+            m_reg$d = zero;
+            t_reg$d = zero;
+            neg_reg$d = 1'b0;
+            strobe_reg$d = 1'b0;
+        end
+        m = m_reg$q;
+        t = t_reg$q;
+        negative = neg_reg$q;
+        strobe = strobe_reg$q;
+        stalled = last$q == max;
+    end
+    
+endmodule // encspeed_core$mt
+
+
+module encspeed_core$mt$age(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$age
+
+
+module encspeed_core$mt$anchored(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$anchored
+
+
+module encspeed_core$mt$dir(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$dir
+
+
+module encspeed_core$mt$have_dir(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$have_dir
+
+
+module encspeed_core$mt$last(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$last
+
+
+module encspeed_core$mt$m_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$m_count
+
+
+module encspeed_core$mt$m_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$m_reg
+
+
+module encspeed_core$mt$neg_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$neg_reg
+
+
+module encspeed_core$mt$phase(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$phase
+
+
+module encspeed_core$mt$span(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$span
+
+
+module encspeed_core$mt$strobe_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$strobe_reg
+
+
+module encspeed_core$mt$t_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mt$t_reg
+
+
+module encspeed_core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strobe);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  step;
+    input wire  forward;
+    input wire  [23:0] cfg_dt;
+    output reg  [23:0] count;
+    output reg  saturated;
+    output reg  strobe;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  max_pos = 24'h7fffff;
+    localparam  min_mag = 24'h800000;
+    
+    // Stub signals
+    reg  [23:0] phase$d;
+    wire  [23:0] phase$q;
+    reg  phase$clock;
+    reg  [23:0] fwd$d;
+    wire  [23:0] fwd$q;
+    reg  fwd$clock;
+    reg  [23:0] bwd$d;
+    wire  [23:0] bwd$q;
+    reg  bwd$clock;
+    reg  [23:0] count_reg$d;
+    wire  [23:0] count_reg$q;
+    reg  count_reg$clock;
+    reg  sat_reg$d;
+    wire  sat_reg$q;
+    reg  sat_reg$clock;
+    reg  strobe_reg$d;
+    wire  strobe_reg$q;
+    reg  strobe_reg$clock;
+    
+    // Local signals
+    reg  [23:0] dt_limit;
+    reg  tick;
+    reg  [23:0] diff;
+    
+    // Sub module instances
+    encspeed_core$pc$phase phase(
+        .d(phase$d),
+        .q(phase$q),
+        .clock(phase$clock)
+    );
+    encspeed_core$pc$fwd fwd(
+        .d(fwd$d),
+        .q(fwd$q),
+        .clock(fwd$clock)
+    );
+    encspeed_core$pc$bwd bwd(
+        .d(bwd$d),
+        .q(bwd$q),
+        .clock(bwd$clock)
+    );
+    encspeed_core$pc$count_reg count_reg(
+        .d(count_reg$d),
+        .q(count_reg$q),
+        .clock(count_reg$clock)
+    );
+    encspeed_core$pc$sat_reg sat_reg(
+        .d(sat_reg$d),
+        .q(sat_reg$q),
+        .clock(sat_reg$clock)
+    );
+    encspeed_core$pc$strobe_reg strobe_reg(
+        .d(strobe_reg$d),
+        .q(strobe_reg$q),
+        .clock(strobe_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        phase$clock = clock;
+        fwd$clock = clock;
+        bwd$clock = clock;
+        count_reg$clock = clock;
+        sat_reg$clock = clock;
+        strobe_reg$clock = clock;
+        phase$d = phase$q;
+        fwd$d = fwd$q;
+        bwd$d = bwd$q;
+        count_reg$d = count_reg$q;
+        sat_reg$d = sat_reg$q;
+        strobe_reg$d = strobe_reg$q;
+        dt_limit = cfg_dt - one;
+        if (cfg_dt == zero) begin
+            dt_limit = zero;
+        end
+        tick = phase$q >= dt_limit;
+        phase$d = phase$q + one;
+        diff = bwd$q - fwd$q;
+        if (fwd$q >= bwd$q) begin
+            diff = fwd$q - bwd$q;
+        end
+        strobe_reg$d = tick;
+        if (tick) begin
+            phase$d = zero;
+            fwd$d = zero;
+            bwd$d = zero;
+            if (step & forward) begin
+                fwd$d = one;
+            end
+            if (step & ~forward) begin
+                bwd$d = one;
+            end
+            sat_reg$d = 1'b0;
+            if (fwd$q >= bwd$q) begin
+                count_reg$d = diff;
+                if (diff > max_pos) begin
+                    count_reg$d = max_pos;
+                    sat_reg$d = 1'b1;
+                end
+            end
+            else begin
+                count_reg$d = zero - diff;
+                if (diff > min_mag) begin
+                    count_reg$d = min_mag;
+                    sat_reg$d = 1'b1;
+                end
+            end
+        end
+        else begin
+            if (step & forward) begin
+                fwd$d = fwd$q + one;
+            end
+            if (step & ~forward) begin
+                bwd$d = bwd$q + one;
+            end
+        end
+        if (reset) begin
+            phase$d = zero;
+            fwd$d = zero;
+            bwd$d = zero;
+            count_reg$d = zero;
+            sat_reg$d = 1'b0;
+            strobe_reg$d = 1'b0;
+        end
+        count = count_reg$q;
+        saturated = sat_reg$q;
+        strobe = strobe_reg$q;
+    end
+    
+endmodule // encspeed_core$pc
+
+
+module encspeed_core$pc$bwd(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$pc$bwd
+
+
+module encspeed_core$pc$count_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$pc$count_reg
+
+
+module encspeed_core$pc$fwd(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$pc$fwd
+
+
+module encspeed_core$pc$phase(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$pc$phase
+
+
+module encspeed_core$pc$sat_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$pc$sat_reg
+
+
+module encspeed_core$pc$strobe_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$pc$strobe_reg
+
+
+module encspeed_core$scale_n1(value,shift,scaled);
+    
+    // Module arguments
+    input wire  [40:0] value;
+    input wire  [1:0] shift;
+    output reg  [40:0] scaled;
+    
+    // Constant declarations
+    localparam  zero = 41'h0;
+    localparam  one = 41'h1;
+    localparam  two = 41'h2;
+    localparam  sign_mask = 41'h10000000000;
+    localparam  sh_zero = 2'b0;
+    localparam  sh_one = 2'b1;
+    localparam  by_one = 8'h1;
+    localparam  by_two = 8'h2;
+    
+    // Local signals
+    reg  negative;
+    reg  [40:0] magnitude;
+    reg  [40:0] rounded;
+    
+    // Update code
+    always @(*) begin
+        negative = (value & sign_mask) != zero;
+        magnitude = value;
+        if (negative) begin
+            magnitude = zero - value;
+        end
+        rounded = magnitude;
+        if (shift == sh_one) begin
+            rounded = (magnitude + one) >> by_one;
+        end
+        else if (shift != sh_zero) begin
+            rounded = (magnitude + two) >> by_two;
+        end
+        scaled = rounded;
+        if (negative) begin
+            scaled = zero - rounded;
+        end
+    end
+    
+endmodule // encspeed_core$scale_n1
+
+
+module encspeed_core$scale_n2(value,shift,scaled);
+    
+    // Module arguments
+    input wire  [40:0] value;
+    input wire  [1:0] shift;
+    output reg  [40:0] scaled;
+    
+    // Constant declarations
+    localparam  zero = 41'h0;
+    localparam  one = 41'h1;
+    localparam  two = 41'h2;
+    localparam  sign_mask = 41'h10000000000;
+    localparam  sh_zero = 2'b0;
+    localparam  sh_one = 2'b1;
+    localparam  by_one = 8'h1;
+    localparam  by_two = 8'h2;
+    
+    // Local signals
+    reg  negative;
+    reg  [40:0] magnitude;
+    reg  [40:0] rounded;
+    
+    // Update code
+    always @(*) begin
+        negative = (value & sign_mask) != zero;
+        magnitude = value;
+        if (negative) begin
+            magnitude = zero - value;
+        end
+        rounded = magnitude;
+        if (shift == sh_one) begin
+            rounded = (magnitude + one) >> by_one;
+        end
+        else if (shift != sh_zero) begin
+            rounded = (magnitude + two) >> by_two;
+        end
+        scaled = rounded;
+        if (negative) begin
+            scaled = zero - rounded;
+        end
+    end
+    
+endmodule // encspeed_core$scale_n2
+
+
+module encspeed_core$scale_n3(value,shift,scaled);
+    
+    // Module arguments
+    input wire  [40:0] value;
+    input wire  [1:0] shift;
+    output reg  [40:0] scaled;
+    
+    // Constant declarations
+    localparam  zero = 41'h0;
+    localparam  one = 41'h1;
+    localparam  two = 41'h2;
+    localparam  sign_mask = 41'h10000000000;
+    localparam  sh_zero = 2'b0;
+    localparam  sh_one = 2'b1;
+    localparam  by_one = 8'h1;
+    localparam  by_two = 8'h2;
+    
+    // Local signals
+    reg  negative;
+    reg  [40:0] magnitude;
+    reg  [40:0] rounded;
+    
+    // Update code
+    always @(*) begin
+        negative = (value & sign_mask) != zero;
+        magnitude = value;
+        if (negative) begin
+            magnitude = zero - value;
+        end
+        rounded = magnitude;
+        if (shift == sh_one) begin
+            rounded = (magnitude + one) >> by_one;
+        end
+        else if (shift != sh_zero) begin
+            rounded = (magnitude + two) >> by_two;
+        end
+        scaled = rounded;
+        if (negative) begin
+            scaled = zero - rounded;
+        end
+    end
+    
+endmodule // encspeed_core$scale_n3
+
+
+module encspeed_core$startup(clock,reset,cfg_filter,hold);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [15:0] cfg_filter;
+    output reg  hold;
+    
+    // Constant declarations
+    localparam  two = 2'b10;
+    localparam  sync_one = 2'b1;
+    localparam  zero = 16'h0;
+    localparam  one = 16'h1;
+    localparam  max = 16'hffff;
+    localparam  sync_zero = 2'b0;
+    
+    // Stub signals
+    reg  [1:0] sync_edges$d;
+    wire  [1:0] sync_edges$q;
+    reg  sync_edges$clock;
+    reg  [15:0] settle_edges$d;
+    wire  [15:0] settle_edges$q;
+    reg  settle_edges$clock;
+    
+    // Local signals
+    reg  [15:0] filter_delay;
+    
+    // Sub module instances
+    encspeed_core$startup$sync_edges sync_edges(
+        .d(sync_edges$d),
+        .q(sync_edges$q),
+        .clock(sync_edges$clock)
+    );
+    encspeed_core$startup$settle_edges settle_edges(
+        .d(settle_edges$d),
+        .q(settle_edges$q),
+        .clock(settle_edges$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        sync_edges$clock = clock;
+        settle_edges$clock = clock;
+        sync_edges$d = sync_edges$q;
+        settle_edges$d = settle_edges$q;
+        filter_delay = cfg_filter;
+        if (cfg_filter == zero) begin
+            filter_delay = one;
+        end
+        if (sync_edges$q != two) begin
+            sync_edges$d = sync_edges$q + sync_one;
+        end
+        else if (settle_edges$q != max) begin
+            settle_edges$d = settle_edges$q + one;
+        end
+        if (reset) begin
+            sync_edges$d = sync_zero;
+            settle_edges$d = zero;
+        end
+        hold = (sync_edges$q != two) | (settle_edges$q < filter_delay);
+    end
+    
+endmodule // encspeed_core$startup
+
+
+module encspeed_core$startup$settle_edges(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$startup$settle_edges
+
+
+module encspeed_core$startup$sync_edges(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$startup$sync_edges
 
 
 module encspeed_core$sync_a(clock,reset,level_in,level_out);
@@ -346,7 +6715,175 @@ module encspeed_core$sync_a$stable(d,q,clock);
 endmodule // encspeed_core$sync_a$stable
 
 
-module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update);
+module encspeed_core$sync_b(clock,reset,level_in,level_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  level_in;
+    output reg  level_out;
+    
+    // Stub signals
+    reg  meta$d;
+    wire  meta$q;
+    reg  meta$clock;
+    reg  stable$d;
+    wire  stable$q;
+    reg  stable$clock;
+    
+    // Sub module instances
+    encspeed_core$sync_b$meta meta(
+        .d(meta$d),
+        .q(meta$q),
+        .clock(meta$clock)
+    );
+    encspeed_core$sync_b$stable stable(
+        .d(stable$d),
+        .q(stable$q),
+        .clock(stable$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        meta$clock = clock;
+        stable$clock = clock;
+        meta$d = meta$q;
+        stable$d = stable$q;
+        meta$d = level_in;
+        stable$d = meta$q;
+        if (reset) begin
+            meta$d = 1'b0;
+            stable$d = 1'b0;
+        end
+        level_out = stable$q;
+    end
+    
+endmodule // encspeed_core$sync_b
+
+
+module encspeed_core$sync_b$meta(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$sync_b$meta
+
+
+module encspeed_core$sync_b$stable(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$sync_b$stable
+
+
+module encspeed_core$sync_z(clock,reset,level_in,level_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  level_in;
+    output reg  level_out;
+    
+    // Stub signals
+    reg  meta$d;
+    wire  meta$q;
+    reg  meta$clock;
+    reg  stable$d;
+    wire  stable$q;
+    reg  stable$clock;
+    
+    // Sub module instances
+    encspeed_core$sync_z$meta meta(
+        .d(meta$d),
+        .q(meta$q),
+        .clock(meta$clock)
+    );
+    encspeed_core$sync_z$stable stable(
+        .d(stable$d),
+        .q(stable$q),
+        .clock(stable$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        meta$clock = clock;
+        stable$clock = clock;
+        meta$d = meta$q;
+        stable$d = stable$q;
+        meta$d = level_in;
+        stable$d = meta$q;
+        if (reset) begin
+            meta$d = 1'b0;
+            stable$d = 1'b0;
+        end
+        level_out = stable$q;
+    end
+    
+endmodule // encspeed_core$sync_z
+
+
+module encspeed_core$sync_z$meta(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$sync_z$meta
+
+
+module encspeed_core$sync_z$stable(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$sync_z$stable
+
+
+module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,primed);
     
     // Module arguments
     input wire  clock;
@@ -358,6 +6895,7 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update);
     output reg  [23:0] nep;
     output reg  [23:0] ndt;
     output reg  update;
+    output reg  primed;
     
     // Constant declarations
     localparam  zero = 24'h0;
@@ -377,6 +6915,9 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update);
     reg  update_reg$d;
     wire  update_reg$q;
     reg  update_reg$clock;
+    reg  primed_reg$d;
+    wire  primed_reg$q;
+    reg  primed_reg$clock;
     
     // Local signals
     reg  nep_write;
@@ -402,6 +6943,11 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update);
         .q(update_reg$q),
         .clock(update_reg$clock)
     );
+    encspeed_core$table1$primed_reg primed_reg(
+        .d(primed_reg$d),
+        .q(primed_reg$q),
+        .clock(primed_reg$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -409,10 +6955,12 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update);
         nep1$clock = clock;
         ndt1$clock = clock;
         update_reg$clock = clock;
+        primed_reg$clock = clock;
         cep$d = cep$q;
         nep1$d = nep1$q;
         ndt1$d = ndt1$q;
         update_reg$d = update_reg$q;
+        primed_reg$d = primed_reg$q;
         nep_write = tick & (cep$q != zero);
         if (nep_write) begin
             nep1$d = cep$q;
@@ -427,7 +6975,9 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update);
             cep$d = zero;
         end
         update_reg$d = nep_write | restart;
+        primed_reg$d = primed_reg$q | restart;
         if (reset) begin
+            primed_reg$d = 1'b0;
             cep$d = zero;
             nep1$d = zero;
             ndt1$d = one;
@@ -436,6 +6986,7 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update);
         nep = nep1$q;
         ndt = ndt1$q;
         update = update_reg$q;
+        primed = primed_reg$q;
     end
     
 endmodule // encspeed_core$table1
@@ -498,6 +7049,25 @@ module encspeed_core$table1$nep1(d,q,clock);
 endmodule // encspeed_core$table1$nep1
 
 
+module encspeed_core$table1$primed_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$table1$primed_reg
+
+
 module encspeed_core$table1$update_reg(d,q,clock);
     
     // Module arguments
@@ -517,13 +7087,14 @@ module encspeed_core$table1$update_reg(d,q,clock);
 endmodule // encspeed_core$table1$update_reg
 
 
-module encspeed_core$timebase(clock,reset,lep,dt,tick,restart,cdt,stalled);
+module encspeed_core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,stalled);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  lep;
     input wire  [23:0] dt;
+    input wire  [23:0] timeout;
     output reg  tick;
     output reg  restart;
     output reg  [23:0] cdt;
@@ -534,7 +7105,6 @@ module encspeed_core$timebase(clock,reset,lep,dt,tick,restart,cdt,stalled);
     localparam  one = 24'h1;
     localparam  min_dt = 24'h2;
     localparam  saturated = 24'hffffff;
-    localparam  timeout_dt = 24'h3e8;
     
     // Stub signals
     reg  [23:0] ts_count$d;
@@ -602,7 +7172,7 @@ module encspeed_core$timebase(clock,reset,lep,dt,tick,restart,cdt,stalled);
         tick = tick_now;
         restart = restart_now;
         cdt = cdt_count$q;
-        stalled = cdt_count$q >= timeout_dt;
+        stalled = cdt_count$q >= timeout;
     end
     
 endmodule // encspeed_core$timebase
@@ -663,3 +7233,22 @@ module encspeed_core$timebase$ts_count(d,q,clock);
     end
           
 endmodule // encspeed_core$timebase$ts_count
+
+
+module encspeed_core$timeout_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$timeout_reg

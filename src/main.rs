@@ -126,6 +126,13 @@ enum Cmd {
         #[arg(long)]
         title: Option<String>,
     },
+    /// Rewrite the generated pages of docs/ (ports.md; registers.md) for the default
+    /// parameters; a test checks they are current.
+    Docs {
+        /// The docs directory.
+        #[arg(long, default_value = "docs")]
+        out: PathBuf,
+    },
     /// Constant-speed accuracy sweep of every estimator of the bit-true core (CSV, SVG).
     ///
     /// Runs the golden core at log-spaced constant speeds from 0.01 to 1000 ω_lim (1 MHz
@@ -446,6 +453,7 @@ fn main() -> ExitCode {
                 })
             }
         }
+        Cmd::Docs { out } => docs(&out),
         Cmd::Bench { spec, cycles } => spec.run(|p| bench(p, cycles)),
         Cmd::Synth {
             spec,
@@ -522,6 +530,18 @@ fn generate(p: &Params, out: &Path) -> Outcome {
         p.dt_cycles(),
         p.omega_lim_rps()
     );
+    Ok(())
+}
+
+/// The generated pages of docs/, for the default parameters.
+fn docs(out: &Path) -> Outcome {
+    let p = Params::new(Spec::default()).map_err(|e| (2, e.to_string()))?;
+    for (name, text) in [("ports.md", hdl::emit::ports_markdown(&p))] {
+        let path = out.join(name);
+        std::fs::write(&path, text)
+            .map_err(|e| (1, format!("cannot write {}: {e}", path.display())))?;
+        println!("wrote {}", path.display());
+    }
     Ok(())
 }
 

@@ -41,7 +41,7 @@ pub fn core_ports(p: &Params) -> Vec<Port> {
         i("cfg_dt", n, "dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)"),
         i("cfg_timeout", n, "zero-speed timeout in dt intervals; 0 = the generation default; registered"),
         i("cfg_filter", FILTER_BITS, "glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off"),
-        i("cfg_mode", 2, "decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Change only in reset"),
+        i("cfg_mode", 2, "decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. A change resets the whole core (as reset)"),
         i("cfg_z_mode", 2, "index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset"),
         i("clear_faults", 1, "clears fault_illegal, fault_overspeed, fault_revolution (an event in the same cycle wins)"),
         o("position", POSITION_BITS, "position in decoder steps, 0 .. lines*2^s - 1 (s = 0, 1, 2 in x1, x2, x4); wraps at a revolution, which is its definition"),

@@ -41,6 +41,16 @@ fn generated_files_are_up_to_date() {
 }
 
 #[test]
+fn generated_docs_are_up_to_date() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs/ports.md");
+    let doc = std::fs::read_to_string(&path).expect("docs/ports.md");
+    assert!(
+        doc == hdl::emit::ports_markdown(&default_params()),
+        "docs/ports.md is stale: run `cargo run --release -- docs` and commit it"
+    );
+}
+
+#[test]
 fn manifest_records_the_parameters_and_ports() {
     let m: toml::Value =
         toml::from_str(&std::fs::read_to_string(generated("encspeed_core.toml")).unwrap()).unwrap();
