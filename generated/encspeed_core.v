@@ -115,7 +115,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     reg  startup$clock;
     reg  startup$reset;
     reg  [15:0] startup$cfg_filter;
-    wire  startup$hold;
+    wire  startup$front_reset;
     reg  filter_a$clock;
     reg  filter_a$reset;
     reg  filter_a$level_in;
@@ -292,7 +292,8 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     // Local signals
     reg  rst;
     reg  front_reset;
-    reg  reversal;
+    reg  first_step;
+    reg  step_counted;
     reg  engine_reset;
     reg  [23:0] dt_eff;
     reg  [1:0] shift;
@@ -321,7 +322,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         .clock(startup$clock),
         .reset(startup$reset),
         .cfg_filter(startup$cfg_filter),
-        .hold(startup$hold)
+        .front_reset(startup$front_reset)
     );
     encspeed_core$filter_a filter_a(
         .clock(filter_a$clock),
@@ -611,7 +612,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         sync_z$level_in = enc_z;
         startup$reset = rst;
         startup$cfg_filter = cfg_filter;
-        front_reset = rst | startup$hold;
+        front_reset = startup$front_reset;
         filter_a$reset = rst;
         filter_b$reset = rst;
         filter_z$reset = rst;
@@ -631,8 +632,9 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         counter$z = filter_z$level_out;
         counter$counts_per_rev = counts_per_rev;
         counter$cfg_z_mode = cfg_z_mode;
-        reversal = decoder$step & have_dir$q & (decoder$forward ^ last_dir$q);
-        engine_reset = rst | reversal;
+        first_step = decoder$step & (~have_dir$q | (decoder$forward ^ last_dir$q));
+        engine_reset = rst | first_step;
+        step_counted = decoder$step & ~rst;
         if (decoder$step) begin
             have_dir$d = 1'b1;
             last_dir$d = decoder$forward;
@@ -646,7 +648,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         timebase$dt = dt_eff;
         timebase$timeout = timeout_reg$q;
         table1$reset = engine_reset;
-        table1$lep = decoder$step;
+        table1$lep = step_counted;
         table1$tick = timebase$tick;
         table1$restart = timebase$restart;
         table1$cdt = timebase$cdt;
@@ -6528,13 +6530,13 @@ module encspeed_core$scale_n3(value,shift,scaled);
 endmodule // encspeed_core$scale_n3
 
 
-module encspeed_core$startup(clock,reset,cfg_filter,hold);
+module encspeed_core$startup(clock,reset,cfg_filter,front_reset);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  [15:0] cfg_filter;
-    output reg  hold;
+    output reg  front_reset;
     
     // Constant declarations
     localparam  two = 2'b10;
@@ -6551,8 +6553,12 @@ module encspeed_core$startup(clock,reset,cfg_filter,hold);
     reg  [15:0] settle_edges$d;
     wire  [15:0] settle_edges$q;
     reg  settle_edges$clock;
+    reg  done$d;
+    wire  done$q;
+    reg  done$clock;
     
     // Local signals
+    reg  hold;
     reg  [15:0] filter_delay;
     
     // Sub module instances
@@ -6566,13 +6572,20 @@ module encspeed_core$startup(clock,reset,cfg_filter,hold);
         .q(settle_edges$q),
         .clock(settle_edges$clock)
     );
+    encspeed_core$startup$done done(
+        .d(done$d),
+        .q(done$q),
+        .clock(done$clock)
+    );
     
     // Update code
     always @(*) begin
         sync_edges$clock = clock;
         settle_edges$clock = clock;
+        done$clock = clock;
         sync_edges$d = sync_edges$q;
         settle_edges$d = settle_edges$q;
+        done$d = done$q;
         filter_delay = cfg_filter;
         if (cfg_filter == zero) begin
             filter_delay = one;
@@ -6583,14 +6596,39 @@ module encspeed_core$startup(clock,reset,cfg_filter,hold);
         else if (settle_edges$q != max) begin
             settle_edges$d = settle_edges$q + one;
         end
+        done$d = done$q;
+        if ((sync_edges$q == two) & (settle_edges$q >= filter_delay)) begin
+            done$d = 1'b1;
+        end
         if (reset) begin
+            done$d = 1'b0;
             sync_edges$d = sync_zero;
             settle_edges$d = zero;
         end
-        hold = (sync_edges$q != two) | (settle_edges$q < filter_delay);
+        hold = ~done$q & ((sync_edges$q != two) | (settle_edges$q < filter_delay));
+        front_reset = reset | hold;
     end
     
 endmodule // encspeed_core$startup
+
+
+module encspeed_core$startup$done(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$startup$done
 
 
 module encspeed_core$startup$settle_edges(d,q,clock);
@@ -6979,6 +7017,9 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
         if (reset) begin
             primed_reg$d = 1'b0;
             cep$d = zero;
+            if (lep) begin
+                cep$d = one;
+            end
             nep1$d = zero;
             ndt1$d = one;
             update_reg$d = 1'b0;

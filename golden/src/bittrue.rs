@@ -64,6 +64,17 @@ impl Table1 {
         };
     }
 
+    /// Reset, with the pulse `lep` of the same cycle counted as the first of the new
+    /// measurement (Cep = 1): the state a restart at that pulse leaves, with Nep1 and Ndt1
+    /// cleared. The core does this at the first step of each direction, so that the first
+    /// window after reset or a reversal starts at a pulse, as every later one does.
+    pub fn reset_with_pulse(&mut self, lep: bool) {
+        self.reset();
+        if lep {
+            self.s.cep = 1;
+        }
+    }
+
     /// The registers as they stand.
     pub fn state(&self) -> Table1State {
         self.s

@@ -19,14 +19,19 @@
 //! - **Start-up.** The synchronisers and filters leave reset low. The decoder and the
 //!   position counter are held in reset while fewer than 2 + max(`cfg_filter`, 1) edges have
 //!   passed since reset (`fill`), so that the first sample they take is a filtered sample of
-//!   the real channels: a channel already high at reset is not a step.
+//!   the real channels: a channel already high at reset is not a step. The hold ends once
+//!   for all: raising `cfg_filter` later does not bring it back.
 //! - **Rairán's pulse** is a decoder step (x1, x2 or x4), of either direction. The estimator
-//!   measures one direction at a time: a **reversal** (a step whose direction differs from
-//!   the previous step's) resets Table 1, the speed calculator and the speed registers
-//!   (speeds 0, `valid` low) and is not itself counted. The estimator is **primed** by its
-//!   first restart after reset or a reversal (a pulse after at least one dt tick, which
-//!   writes Ndt1); only then are its updates sent to the speed calculator. So no speed ever
-//!   mixes the two directions, and none is computed from a Ndt1 that was not measured.
+//!   measures one direction at a time. The **first step of a direction** — the first after
+//!   reset, or a **reversal** (a step whose direction differs from the previous step's) —
+//!   resets Table 1 and counts that step as the first pulse of the new measurement (Cep = 1,
+//!   the state a restart at that step leaves, with Nep1 and Ndt1 cleared), so the first
+//!   window starts at a pulse as every later one does; it also resets the speed calculator
+//!   and the speed registers (speeds 0, `valid` low). The estimator is **primed** by its
+//!   first restart after that (a pulse after at least one dt tick, which writes an Ndt1
+//!   measured between two steps); only then are its updates sent to the speed calculator.
+//!   So no speed ever mixes the two directions, and none is computed from an Ndt1 or Nep1
+//!   that was not measured from a step.
 //! - **Mode scaling.** Table 1 counts decoder steps, 2^s per line (s = 0, 1, 2 in x1, x2,
 //!   x4). The speed calculator gives n in steps per dt with F fractional bits; the speed
 //!   registers hold n / 2^s in units of ω_lim (one line per dt): the magnitude rounded to
@@ -55,16 +60,15 @@ use crate::baseline_speeds::{
 };
 use crate::bittrue::Table1;
 use crate::et_timer::{EtInputs, EtTimer};
-use crate::mt_counter::{MtCounter, MtInputs};
-use crate::pc_counter::{PcCounter, PcInputs};
 use crate::frontend::{
     CounterInputs, DecoderInputs, GlitchFilter, GlitchFilterInputs, PositionCounter,
     QuadratureDecoder, MODE_INVALID, MODE_X1, MODE_X2,
 };
+use crate::mt_counter::{MtCounter, MtInputs};
 use crate::params::{
-    max_value, Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS,
-    SPEED_FRAC_BITS,
+    max_value, Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
 };
+use crate::pc_counter::{PcCounter, PcInputs};
 use crate::speed_calc::{SpeedCalcInputs, SpeedCalcModel, SpeedFormat, Speeds};
 
 /// Edges after reset before the synchronisers hold real samples.
@@ -192,6 +196,7 @@ pub struct CoreModel {
     mode_reg: u8,
     lines: u64,
     fill: u64,
+    front_done: bool,
     sync: [[bool; 2]; 3],
     filters: [GlitchFilter; 3],
     decoder: QuadratureDecoder,
@@ -232,6 +237,7 @@ impl CoreModel {
             mode_reg: 0,
             lines: u64::from(p.lines()),
             fill: 0,
+            front_done: false,
             sync: [[false; 2]; 3],
             filters: std::array::from_fn(|_| GlitchFilter::new(FILTER_BITS, ERROR_COUNT_BITS)),
             decoder: QuadratureDecoder::new(ERROR_COUNT_BITS),
@@ -307,10 +313,14 @@ impl CoreModel {
         let et = self.et.outputs();
         let mt = self.mt.outputs();
 
-        let front_hold = self.fill < SYNC_CYCLES + inp.cfg_filter.max(1);
+        let settling = self.fill < SYNC_CYCLES + inp.cfg_filter.max(1);
+        let front_hold = !self.front_done && settling;
         let front_reset = rst || front_hold;
+        // The first step of a direction (after reset or a reversal) restarts the estimator
+        // at that step; a reversal also clears the speeds.
         let reversal = dec.step && self.have_dir && dec.forward != self.last_dir;
-        let engine_reset = rst || reversal;
+        let first_step = dec.step && (!self.have_dir || reversal);
+        let engine_reset = rst || first_step;
         let restart = !engine_reset && dec.step && self.engine.state().cdt != 0;
         let primed_before = self.primed;
 
@@ -336,7 +346,7 @@ impl CoreModel {
             cfg_z_mode: inp.cfg_z_mode,
         });
         if engine_reset {
-            self.engine.reset();
+            self.engine.reset_with_pulse(dec.step && !rst);
         } else {
             self.engine.step(dec.step, self.dt_reg);
         }
@@ -432,6 +442,7 @@ impl CoreModel {
                 [level, self.sync[c][0]]
             };
         }
+        self.front_done = !rst && (self.front_done || !settling);
         self.fill = if rst {
             0
         } else {

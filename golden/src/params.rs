@@ -316,7 +316,6 @@ mod tests {
             (with(|s| s.clock_hz = f64::INFINITY), "clock_hz"),
             (with(|s| s.lines = 0), "lines"),
             (with(|s| s.lines = MAX_LINES + 1), "lines"),
-
             (with(|s| s.dt_cycles = 1), "dt_cycles"),
             (with(|s| s.dt_cycles = 0), "dt_cycles"),
             (with(|s| s.counter_bits = 7), "counter_bits"),

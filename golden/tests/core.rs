@@ -26,7 +26,11 @@ fn params() -> Params {
 fn quad(k: u64, period: u64, forward: bool) -> (bool, bool) {
     let m = k % period;
     let a = m < period / 2;
-    let lag = if forward { period / 4 } else { period - period / 4 };
+    let lag = if forward {
+        period / 4
+    } else {
+        period - period / 4
+    };
     let b = (m + period - lag) % period < period / 2;
     (a, b)
 }
@@ -52,7 +56,13 @@ fn run_wave(mode: u8, period: u64, forward: bool, cycles: u64) -> Vec<CoreOutput
 fn last_strobed(o: &[CoreOutputs], baseline: bool) -> CoreOutputs {
     *o.iter()
         .rev()
-        .find(|o| if baseline { o.baseline_strobe } else { o.speed_strobe })
+        .find(|o| {
+            if baseline {
+                o.baseline_strobe
+            } else {
+                o.speed_strobe
+            }
+        })
         .expect("a strobe")
 }
 
@@ -104,7 +114,10 @@ fn known_speeds_of_every_estimator_at_ten_lines_per_dt() {
     assert!(s.valid);
     // PC: 10 steps in every window of 160; ET: 160/16 = 10; M/T: 10 steps over 160 cycles.
     let b = last_strobed(&o, true);
-    assert_eq!((b.speed_pc, b.speed_et, b.speed_mt), (655_360, 655_360, 655_360));
+    assert_eq!(
+        (b.speed_pc, b.speed_et, b.speed_mt),
+        (655_360, 655_360, 655_360)
+    );
 
     // x4: a step every 4 cycles, 40 per dt: Nep1 = 40, n3 = 2·40·39/79 steps per dt =
     // 39.49367 → 2588257 (2^−16 units), then ÷4 with rounding: (2588257 + 2) >> 2 = 647064
@@ -114,14 +127,20 @@ fn known_speeds_of_every_estimator_at_ten_lines_per_dt() {
     assert_eq!((s.nep, s.ndt), (40, 1));
     assert_eq!(s.speed_n3, 647_064);
     let b = last_strobed(&o, true);
-    assert_eq!((b.speed_pc, b.speed_et, b.speed_mt), (655_360, 655_360, 655_360));
+    assert_eq!(
+        (b.speed_pc, b.speed_et, b.speed_mt),
+        (655_360, 655_360, 655_360)
+    );
 
     // Backward: the mirror image.
     let o = run_wave(2, 16, false, 40 * DT);
     let s = last_strobed(&o, false);
     assert_eq!(s.speed_n3, -647_064);
     let b = last_strobed(&o, true);
-    assert_eq!((b.speed_pc, b.speed_et, b.speed_mt), (-655_360, -655_360, -655_360));
+    assert_eq!(
+        (b.speed_pc, b.speed_et, b.speed_mt),
+        (-655_360, -655_360, -655_360)
+    );
 }
 
 #[test]
@@ -292,7 +311,11 @@ fn latencies_are_as_documented() {
         // Position: one more after each rise, edge_to_position edges later (and not before).
         for &k in &rises[..rises.len() - 1] {
             let d = lat.edge_to_position as usize;
-            assert_eq!(outs[k + d].position, outs[k + d - 1].position + 1, "L = {filter}");
+            assert_eq!(
+                outs[k + d].position,
+                outs[k + d - 1].position + 1,
+                "L = {filter}"
+            );
         }
         // Speed strobes: from the third rise on (the first primes the estimator... the
         // first restart is the second step), each rise is followed by a strobe exactly
@@ -300,7 +323,10 @@ fn latencies_are_as_documented() {
         let strobes: Vec<usize> = (0..outs.len()).filter(|&k| outs[k].speed_strobe).collect();
         let d = lat.edge_to_speed_strobe as usize;
         for &k in &rises[2..rises.len() - 1] {
-            assert!(strobes.contains(&(k + d)), "L = {filter}: rise {k}, strobes {strobes:?}");
+            assert!(
+                strobes.contains(&(k + d)),
+                "L = {filter}: rise {k}, strobes {strobes:?}"
+            );
         }
     }
 }

@@ -141,7 +141,8 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     mode_reg: DFF<Bits<2>>,
     rst: Signal<Local, Bit>,
     front_reset: Signal<Local, Bit>,
-    reversal: Signal<Local, Bit>,
+    first_step: Signal<Local, Bit>,
+    step_counted: Signal<Local, Bit>,
     engine_reset: Signal<Local, Bit>,
     dt_eff: Signal<Local, Bits<N>>,
     shift: Signal<Local, Bits<2>>,
@@ -168,7 +169,8 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
     pub fn new(p: &Params) -> Self {
         assert_eq!(p.counter_bits() as usize, N, "counter width mismatch");
         assert!(P == 2 * N + 1 && S == N + F + 1, "derived widths");
-        let lines = |shift: u32| -> Bits<C> { (p.counts_per_rev(shift) & ((1u64 << C) - 1)).into() };
+        let lines =
+            |shift: u32| -> Bits<C> { (p.counts_per_rev(shift) & ((1u64 << C) - 1)).into() };
         Self {
             clock: Default::default(),
             reset: Default::default(),
@@ -235,7 +237,8 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             mode_reg: Default::default(),
             rst: Default::default(),
             front_reset: Default::default(),
-            reversal: Default::default(),
+            first_step: Default::default(),
+            step_counted: Default::default(),
             engine_reset: Default::default(),
             dt_eff: Default::default(),
             shift: Default::default(),
@@ -314,7 +317,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.sync_z.level_in.next = self.enc_z.val();
         self.startup.reset.next = self.rst.val();
         self.startup.cfg_filter.next = self.cfg_filter.val();
-        self.front_reset.next = self.rst.val() | self.startup.hold.val();
+        self.front_reset.next = self.startup.front_reset.val();
         self.filter_a.reset.next = self.rst.val();
         self.filter_b.reset.next = self.rst.val();
         self.filter_z.reset.next = self.rst.val();
@@ -335,11 +338,12 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.counter.counts_per_rev.next = self.counts_per_rev.val();
         self.counter.cfg_z_mode.next = self.cfg_z_mode.val();
 
-        // Direction tracking: a reversal restarts the Rairán estimator.
-        self.reversal.next = self.decoder.step.val()
-            & self.have_dir.q.val()
-            & (self.decoder.forward.val() ^ self.last_dir.q.val());
-        self.engine_reset.next = self.rst.val() | self.reversal.val();
+        // The first step of a direction (after reset or a reversal) restarts the estimator
+        // at that step, counted as its first pulse.
+        self.first_step.next = self.decoder.step.val()
+            & (!self.have_dir.q.val() | (self.decoder.forward.val() ^ self.last_dir.q.val()));
+        self.engine_reset.next = self.rst.val() | self.first_step.val();
+        self.step_counted.next = self.decoder.step.val() & !self.rst.val();
         if self.decoder.step.val() {
             self.have_dir.d.next = true;
             self.last_dir.d.next = self.decoder.forward.val();
@@ -355,7 +359,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.timebase.dt.next = self.dt_eff.val();
         self.timebase.timeout.next = self.timeout_reg.q.val();
         self.table1.reset.next = self.engine_reset.val();
-        self.table1.lep.next = self.decoder.step.val();
+        self.table1.lep.next = self.step_counted.val();
         self.table1.tick.next = self.timebase.tick.val();
         self.table1.restart.next = self.timebase.restart.val();
         self.table1.cdt.next = self.timebase.cdt.val();

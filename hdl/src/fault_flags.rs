@@ -83,7 +83,14 @@ impl Default for FaultFlags {
 impl Logic for FaultFlags {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, illegal_reg, overspeed_reg, revolution_reg, count);
+        dff_setup!(
+            self,
+            clock,
+            illegal_reg,
+            overspeed_reg,
+            revolution_reg,
+            count
+        );
         self.illegal_reg.d.next =
             (self.illegal_reg.q.val() & !self.clear_faults.val()) | self.illegal.val();
         self.overspeed_reg.d.next = (self.overspeed_reg.q.val() & !self.clear_faults.val())
@@ -129,12 +136,30 @@ mod tests {
         uut.connect_all();
         // (reset, clear, illegal, rej_a, rej_b, rej_z, rev) → (illegal, overspeed, rev, count)
         let rows: [([bool; 7], (bool, bool, bool, u64)); 6] = [
-            ([true, false, false, false, false, false, false], (false, false, false, 0)),
-            ([false, false, true, false, true, true, false], (true, true, false, 2)),
-            ([false, false, false, false, false, false, true], (true, true, true, 2)),
-            ([false, true, false, false, false, false, false], (false, false, false, 2)),
-            ([false, true, true, true, true, true, false], (true, true, false, 5)),
-            ([true, false, true, true, true, true, true], (false, false, false, 0)),
+            (
+                [true, false, false, false, false, false, false],
+                (false, false, false, 0),
+            ),
+            (
+                [false, false, true, false, true, true, false],
+                (true, true, false, 2),
+            ),
+            (
+                [false, false, false, false, false, false, true],
+                (true, true, true, 2),
+            ),
+            (
+                [false, true, false, false, false, false, false],
+                (false, false, false, 2),
+            ),
+            (
+                [false, true, true, true, true, true, false],
+                (true, true, false, 5),
+            ),
+            (
+                [true, false, true, true, true, true, true],
+                (false, false, false, 0),
+            ),
         ];
         for (k, (i, want)) in rows.iter().enumerate() {
             uut.reset.next = i[0];

@@ -91,8 +91,14 @@ impl<const N: usize> Logic for SyncEstimator<N> {
         self.update_reg.d.next = self.nep_write.val() | self.restart.val();
         self.primed_reg.d.next = self.primed_reg.q.val() | self.restart.val();
         if self.reset.val() {
+            // A pulse in the reset cycle is the first of the new measurement (the core
+            // resets the estimator at the first step of a direction and counts that step,
+            // as a restart would): the window starts at a pulse.
             self.primed_reg.d.next = false;
             self.cep.d.next = self.zero.val();
+            if self.lep.val() {
+                self.cep.d.next = self.one.val();
+            }
             self.nep1.d.next = self.zero.val();
             self.ndt1.d.next = self.one.val();
             self.update_reg.d.next = false;

@@ -16,7 +16,11 @@ pub(crate) fn verilator_lint(top: &str, verilog: &str) {
                 .wrapping_mul(0x100_0000_01b3))
     ));
     std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join(format!("{top}.v"));
+    // A file of its own per call: tests (and test processes) lint the same design at once,
+    // and one must never read a file another is rewriting.
+    static CALLS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let file = dir.join(format!("{top}-{}-{call}.v", std::process::id()));
     std::fs::write(&file, verilog).unwrap();
     let out = std::process::Command::new("verilator")
         .args([

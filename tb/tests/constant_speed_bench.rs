@@ -21,8 +21,7 @@ fn generated(name: &str) -> PathBuf {
 /// Speeds printed by the bench (value, valid) for a line period of `period` cycles.
 fn run(period: u64, cycles: u64) -> Vec<(f64, bool)> {
     let manifest: toml::Value =
-        toml::from_str(&std::fs::read_to_string(generated("encspeed_core.toml")).unwrap())
-            .unwrap();
+        toml::from_str(&std::fs::read_to_string(generated("encspeed_core.toml")).unwrap()).unwrap();
     let frac = manifest["speed_frac_bits"].as_integer().unwrap();
     let bits = manifest["speed_bits"].as_integer().unwrap();
     let n = manifest["spec"]["counter_bits"].as_integer().unwrap();
@@ -97,11 +96,7 @@ fn speed_n3_of_the_shipped_file_is_within_budget_at_constant_speeds() {
         let budget = n3_error_budget(n1_worst, DT) + speed_lsb_error(16) / r;
         // Skip the first two updates: they may come before the estimator is synchronised.
         let settled: Vec<(f64, bool)> = speeds.iter().skip(2).copied().collect();
-        assert!(
-            settled.len() >= 4,
-            "r = {r}: only {} updates",
-            speeds.len()
-        );
+        assert!(settled.len() >= 4, "r = {r}: only {} updates", speeds.len());
         let worst = settled
             .iter()
             .map(|(v, valid)| {
