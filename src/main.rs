@@ -522,8 +522,11 @@ fn generate(p: &Params, out: &Path) -> Outcome {
     };
     write("encspeed_core.v", &e.verilog)?;
     write("encspeed_core.toml", &e.manifest)?;
+    for (name, text) in hdl::emit_wb::emit_wb(p) {
+        write(name, &text)?;
+    }
     println!(
-        "wrote {} and {} ({}-bit counters, dt = {} cycles, ω_lim = {} rev/s)",
+        "wrote {} and {}, the Wishbone top and the C header ({}-bit counters, dt = {} cycles, ω_lim = {} rev/s)",
         out.join("encspeed_core.v").display(),
         out.join("encspeed_core.toml").display(),
         p.counter_bits(),
@@ -536,7 +539,10 @@ fn generate(p: &Params, out: &Path) -> Outcome {
 /// The generated pages of docs/, for the default parameters.
 fn docs(out: &Path) -> Outcome {
     let p = Params::new(Spec::default()).map_err(|e| (2, e.to_string()))?;
-    for (name, text) in [("ports.md", hdl::emit::ports_markdown(&p))] {
+    for (name, text) in [
+        ("ports.md", hdl::emit::ports_markdown(&p)),
+        ("registers.md", hdl::emit_wb::registers_markdown(&p)),
+    ] {
         let path = out.join(name);
         std::fs::write(&path, text)
             .map_err(|e| (1, format!("cannot write {}: {e}", path.display())))?;

@@ -27,7 +27,12 @@ fn generate_with_defaults_reproduces_generated_dir() {
     let out = scratch("generate");
     let o = encspeed(&["generate", "--out", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    for f in ["encspeed_core.v", "encspeed_core.toml"] {
+    for f in [
+        "encspeed_core.v",
+        "encspeed_core.toml",
+        "encspeed_wb.v",
+        "encspeed_regs.h",
+    ] {
         let shipped = std::fs::read(
             Path::new(env!("CARGO_MANIFEST_DIR"))
                 .join("generated")

@@ -35,3 +35,4 @@ pub mod sine_rom;
 pub mod smallsignal;
 pub mod speed_calc;
 pub mod wb_regs;
+pub mod wb_top;

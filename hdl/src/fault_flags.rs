@@ -135,7 +135,8 @@ mod tests {
         let mut uut = FaultFlags::default();
         uut.connect_all();
         // (reset, clear, illegal, rej_a, rej_b, rej_z, rev) → (illegal, overspeed, rev, count)
-        let rows: [([bool; 7], (bool, bool, bool, u64)); 6] = [
+        type Row = ([bool; 7], (bool, bool, bool, u64));
+        let rows: [Row; 6] = [
             (
                 [true, false, false, false, false, false, false],
                 (false, false, false, 0),

@@ -19,6 +19,7 @@
 //! | [`BaselineSpeeds`] | `baseline_speeds.rs` | PC, ET and M/T speeds as signed fixed point (shared divider) |
 //! | [`FaultFlags`] | `fault_flags.rs` | sticky fault flags and the glitch counter |
 //! | [`WbRegs`] | `wb_regs.rs` | Wishbone B4 classic register file of the core (map in `golden::regmap`) |
+//! | `EncspeedWb` | `wishbone_top.rs` | top `encspeed_wb`: the core behind its Wishbone register file |
 //!
 //! Blocks built and verified on their own (rust-hdl and Icarus against their golden models)
 //! and not part of `encspeed_core`:

@@ -4,6 +4,8 @@
 //! ([`golden::bittrue::CoreInputs`]): the bit-true golden model, the rust-hdl simulation
 //! ([`hdl::build_core`]) and the emitted Verilog in Verilator ([`verilator`]).
 
+pub mod accuracy;
+pub mod adversarial;
 pub mod cosim;
 pub mod freqresp;
 pub mod icarus;
@@ -11,6 +13,7 @@ pub mod scenarios;
 pub mod stimulus;
 pub mod verilator;
 pub mod waves;
+pub mod wb_verilator;
 
 /// Directory for build products and simulation output of this workspace (`target/`),
 /// honouring `CARGO_TARGET_DIR`. Never the source tree.

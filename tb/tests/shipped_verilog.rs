@@ -38,6 +38,11 @@ fn generated_files_are_up_to_date() {
     );
     // Emission is deterministic.
     assert_eq!(e.verilog, hdl::emit_core(&default_params()).verilog);
+    // The Wishbone top and the C header.
+    for (name, text) in hdl::emit_wb::emit_wb(&default_params()) {
+        let shipped = std::fs::read_to_string(generated(name)).unwrap_or_default();
+        assert!(text == shipped, "generated/{name} {stale}");
+    }
 }
 
 #[test]

@@ -1,0 +1,371 @@
+//! `encspeed_wb`: the core [`EncspeedCore`] behind its Wishbone B4 classic register file
+//! [`WbRegs`], wired 1:1 (every configuration output of the file drives the core input of
+//! the same name, every core output drives the file's status input of the same name). Its
+//! cycle model is [`golden::wb_top::WbTopModel`]; the register map is [`golden::regmap`].
+//!
+//! ```text
+//! enc_a, enc_b, enc_z ─► EncspeedCore ── 24 status outputs ──► WbRegs ◄─► wb_*
+//!                            ▲                                   │
+//!                            └── cfg_dt, cfg_timeout, cfg_filter, ┤
+//!                                cfg_mode, cfg_z_mode, clear_faults └─► irq
+//! ```
+//!
+//! # Parameters
+//! N = `counter_bits` (8..=32), P = 2N + 1, S = N + 17 as for the core
+//! ([`build_wb`] picks them from [`Params`]); the register file's other widths are the
+//! core's fixed ones (C = [`POSITION_BITS`], FB = [`FILTER_BITS`], G = [`ERROR_COUNT_BITS`]).
+//!
+//! # Ports
+//! `clock`, `reset` (synchronous, active high, both halves), `enc_a`, `enc_b`, `enc_z`
+//! (asynchronous), `wb_cyc_i`, `wb_stb_i`, `wb_we_i`, `wb_adr_i[7:0]`, `wb_dat_i[31:0]`,
+//! `wb_sel_i[3:0]`, `wb_dat_o[31:0]`, `wb_ack_o`, `irq`
+//! ([`golden::wb_top::wb_top_ports`] describes each).
+//!
+//! # Timing
+//! Both halves have registered outputs, so there is no combinational path between them
+//! and none from an input to an output. An access takes two cycles (request edge, ack
+//! cycle); a configuration write acts in the core from the edge after the ack cycle's
+//! start (one edge after the write edge); a read returns the core's outputs as they stood
+//! in the request cycle. A change of `CTRL.MODE` resets the core at the edge that sees it.
+
+use crate::core::EncspeedCore;
+use crate::wb_regs::WbRegs;
+use golden::bittrue::CoreOutputs;
+use golden::params::{Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
+use golden::regmap::ADDR_BITS;
+use golden::wb_regs::WbRegsOutputs;
+use golden::wb_top::{WbTopInputs, WbTopOutputs};
+use rust_hdl::prelude::*;
+
+const C: usize = POSITION_BITS as usize;
+const FB: usize = FILTER_BITS as usize;
+const G: usize = ERROR_COUNT_BITS as usize;
+
+/// The core with its Wishbone register file, N-bit counters (P = 2N + 1, S = N + 17).
+#[derive(LogicBlock)]
+pub struct EncspeedWb<const N: usize, const P: usize, const S: usize> {
+    /// Core and bus clock.
+    pub clock: Signal<In, Clock>,
+    /// Synchronous active-high reset of the core and the register file.
+    pub reset: Signal<In, Bit>,
+    /// Encoder channel A (asynchronous).
+    pub enc_a: Signal<In, Bit>,
+    /// Encoder channel B (asynchronous).
+    pub enc_b: Signal<In, Bit>,
+    /// Encoder index Z (asynchronous).
+    pub enc_z: Signal<In, Bit>,
+    /// Wishbone: bus cycle.
+    pub wb_cyc_i: Signal<In, Bit>,
+    /// Wishbone: strobe.
+    pub wb_stb_i: Signal<In, Bit>,
+    /// Wishbone: 1 write, 0 read.
+    pub wb_we_i: Signal<In, Bit>,
+    /// Wishbone: byte address (bits 1:0 ignored).
+    pub wb_adr_i: Signal<In, Bits<ADDR_BITS>>,
+    /// Wishbone: write data.
+    pub wb_dat_i: Signal<In, Bits<32>>,
+    /// Wishbone: byte lanes of a write.
+    pub wb_sel_i: Signal<In, Bits<4>>,
+    /// Wishbone: read data (0 outside a read's ack cycle).
+    pub wb_dat_o: Signal<Out, Bits<32>>,
+    /// Wishbone: acknowledge, the cycle after the request edge.
+    pub wb_ack_o: Signal<Out, Bit>,
+    /// Interrupt request, level.
+    pub irq: Signal<Out, Bit>,
+    /// The core (its ports are readable in simulation).
+    pub core: EncspeedCore<N, P, S>,
+    /// The register file (its ports are readable in simulation).
+    pub regs: WbRegs<N, S, C, FB, G>,
+}
+
+impl<const N: usize, const P: usize, const S: usize> EncspeedWb<N, P, S> {
+    /// The core and register file of validated parameters `p`; panics unless `N` is
+    /// `p`'s counter width (the dispatch in [`build_wb`] guarantees it).
+    pub fn new(p: &Params) -> Self {
+        Self {
+            clock: Default::default(),
+            reset: Default::default(),
+            enc_a: Default::default(),
+            enc_b: Default::default(),
+            enc_z: Default::default(),
+            wb_cyc_i: Default::default(),
+            wb_stb_i: Default::default(),
+            wb_we_i: Default::default(),
+            wb_adr_i: Default::default(),
+            wb_dat_i: Default::default(),
+            wb_sel_i: Default::default(),
+            wb_dat_o: Default::default(),
+            wb_ack_o: Default::default(),
+            irq: Default::default(),
+            core: EncspeedCore::new(p),
+            regs: WbRegs::new(p),
+        }
+    }
+}
+
+impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedWb<N, P, S> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, core, regs);
+        self.core.reset.next = self.reset.val();
+        self.regs.reset.next = self.reset.val();
+
+        // Encoder and bus in.
+        self.core.enc_a.next = self.enc_a.val();
+        self.core.enc_b.next = self.enc_b.val();
+        self.core.enc_z.next = self.enc_z.val();
+        self.regs.wb_cyc_i.next = self.wb_cyc_i.val();
+        self.regs.wb_stb_i.next = self.wb_stb_i.val();
+        self.regs.wb_we_i.next = self.wb_we_i.val();
+        self.regs.wb_adr_i.next = self.wb_adr_i.val();
+        self.regs.wb_dat_i.next = self.wb_dat_i.val();
+        self.regs.wb_sel_i.next = self.wb_sel_i.val();
+
+        // Configuration: register file → core.
+        self.core.cfg_dt.next = self.regs.cfg_dt.val();
+        self.core.cfg_timeout.next = self.regs.cfg_timeout.val();
+        self.core.cfg_filter.next = self.regs.cfg_filter.val();
+        self.core.cfg_mode.next = self.regs.cfg_mode.val();
+        self.core.cfg_z_mode.next = self.regs.cfg_z_mode.val();
+        self.core.clear_faults.next = self.regs.clear_faults.val();
+
+        // Status: core → register file.
+        self.regs.position.next = self.core.position.val();
+        self.regs.z_latch.next = self.core.z_latch.val();
+        self.regs.index.next = self.core.index.val();
+        self.regs.direction.next = self.core.direction.val();
+        self.regs.nep.next = self.core.nep.val();
+        self.regs.ndt.next = self.core.ndt.val();
+        self.regs.update.next = self.core.update.val();
+        self.regs.speed_n1.next = self.core.speed_n1.val();
+        self.regs.speed_n2.next = self.core.speed_n2.val();
+        self.regs.speed_n3.next = self.core.speed_n3.val();
+        self.regs.speed_strobe.next = self.core.speed_strobe.val();
+        self.regs.speed_pc.next = self.core.speed_pc.val();
+        self.regs.speed_et.next = self.core.speed_et.val();
+        self.regs.speed_mt.next = self.core.speed_mt.val();
+        self.regs.baseline_strobe.next = self.core.baseline_strobe.val();
+        self.regs.valid.next = self.core.valid.val();
+        self.regs.stalled.next = self.core.stalled.val();
+        self.regs.fault_illegal.next = self.core.fault_illegal.val();
+        self.regs.fault_overspeed.next = self.core.fault_overspeed.val();
+        self.regs.fault_revolution.next = self.core.fault_revolution.val();
+        self.regs.cfg_error.next = self.core.cfg_error.val();
+        self.regs.glitch_count.next = self.core.glitch_count.val();
+        self.regs.illegal_count.next = self.core.illegal_count.val();
+        self.regs.rev_error_count.next = self.core.rev_error_count.val();
+
+        // Bus and interrupt out.
+        self.wb_dat_o.next = self.regs.wb_dat_o.val();
+        self.wb_ack_o.next = self.regs.wb_ack_o.val();
+        self.irq.next = self.regs.irq.val();
+    }
+}
+
+/// A simulated `encspeed_wb` of any counter width (direct drive).
+pub trait WbSim {
+    /// One rising clock edge with `inp` applied; the outputs after it, as
+    /// [`golden::wb_top::WbTopModel::step`].
+    fn step(&mut self, inp: &WbTopInputs) -> WbTopOutputs;
+    /// The core's outputs after the last edge (internal signals).
+    fn core_outputs(&self) -> CoreOutputs;
+    /// The register file's configuration outputs after the last edge (internal signals).
+    fn regs_outputs(&self) -> WbRegsOutputs;
+    /// The Verilog of this design, top module named `module_name`.
+    fn verilog(&self, module_name: &str) -> String;
+}
+
+struct Driven<const N: usize, const P: usize, const S: usize> {
+    uut: EncspeedWb<N, P, S>,
+}
+
+impl<const N: usize, const P: usize, const S: usize> Driven<N, P, S> {
+    fn settle(&mut self) {
+        assert!(simulate(&mut self.uut, 100), "design did not settle");
+    }
+}
+
+impl<const N: usize, const P: usize, const S: usize> WbSim for Driven<N, P, S> {
+    fn step(&mut self, inp: &WbTopInputs) -> WbTopOutputs {
+        let b = &inp.bus;
+        assert!(
+            b.wb_adr_i >> ADDR_BITS == 0 && b.wb_sel_i < 16,
+            "bus input out of range: {b:?}"
+        );
+        let u = &mut self.uut;
+        u.reset.next = inp.reset;
+        u.enc_a.next = inp.enc_a;
+        u.enc_b.next = inp.enc_b;
+        u.enc_z.next = inp.enc_z;
+        u.wb_cyc_i.next = b.wb_cyc_i;
+        u.wb_stb_i.next = b.wb_stb_i;
+        u.wb_we_i.next = b.wb_we_i;
+        u.wb_adr_i.next = u64::from(b.wb_adr_i).into();
+        u.wb_dat_i.next = u64::from(b.wb_dat_i).into();
+        u.wb_sel_i.next = u64::from(b.wb_sel_i).into();
+        u.clock.next = Clock { clk: false };
+        self.settle();
+        self.uut.clock.next = Clock { clk: true };
+        self.settle();
+        let u = &self.uut;
+        WbTopOutputs {
+            wb_ack_o: u.wb_ack_o.val(),
+            wb_dat_o: u.wb_dat_o.val().to_u64() as u32,
+            irq: u.irq.val(),
+        }
+    }
+
+    fn core_outputs(&self) -> CoreOutputs {
+        let c = &self.uut.core;
+        let speed = |b: Bits<S>| crate::sim::signed(b.to_u64(), S);
+        CoreOutputs {
+            position: c.position.val().to_u64(),
+            z_latch: c.z_latch.val().to_u64(),
+            index: c.index.val(),
+            direction: c.direction.val(),
+            nep: c.nep.val().to_u64(),
+            ndt: c.ndt.val().to_u64(),
+            update: c.update.val(),
+            speed_n1: speed(c.speed_n1.val()),
+            speed_n2: speed(c.speed_n2.val()),
+            speed_n3: speed(c.speed_n3.val()),
+            speed_strobe: c.speed_strobe.val(),
+            speed_pc: speed(c.speed_pc.val()),
+            speed_et: speed(c.speed_et.val()),
+            speed_mt: speed(c.speed_mt.val()),
+            baseline_strobe: c.baseline_strobe.val(),
+            valid: c.valid.val(),
+            stalled: c.stalled.val(),
+            fault_illegal: c.fault_illegal.val(),
+            fault_overspeed: c.fault_overspeed.val(),
+            fault_revolution: c.fault_revolution.val(),
+            cfg_error: c.cfg_error.val(),
+            glitch_count: c.glitch_count.val().to_u64(),
+            illegal_count: c.illegal_count.val().to_u64(),
+            rev_error_count: c.rev_error_count.val().to_u64(),
+        }
+    }
+
+    fn regs_outputs(&self) -> WbRegsOutputs {
+        let r = &self.uut.regs;
+        WbRegsOutputs {
+            wb_ack_o: r.wb_ack_o.val(),
+            wb_dat_o: r.wb_dat_o.val().to_u64() as u32,
+            irq: r.irq.val(),
+            cfg_dt: r.cfg_dt.val().to_u64(),
+            cfg_timeout: r.cfg_timeout.val().to_u64(),
+            cfg_filter: r.cfg_filter.val().to_u64(),
+            cfg_mode: r.cfg_mode.val().to_u64() as u8,
+            cfg_z_mode: r.cfg_z_mode.val().to_u64() as u8,
+            clear_faults: r.clear_faults.val(),
+        }
+    }
+
+    fn verilog(&self, module_name: &str) -> String {
+        crate::emit::named_verilog(&self.uut, module_name)
+    }
+}
+
+fn driven<const N: usize, const P: usize, const S: usize>(p: &Params) -> Box<dyn WbSim> {
+    let mut uut = EncspeedWb::<N, P, S>::new(p);
+    uut.connect_all();
+    let mut d = Driven { uut };
+    d.settle();
+    Box::new(d)
+}
+
+/// The rust-hdl `encspeed_wb` for `p`, ready to step (power-up state: every flop 0, as
+/// the emitted Verilog's; apply `reset` before relying on the outputs).
+pub fn build_wb(p: &Params) -> Box<dyn WbSim> {
+    // The same width dispatch as `crate::sim::build_core` (N → <N, 2N + 1, N + 17>).
+    match p.counter_bits() {
+        8 => driven::<8, 17, 25>(p),
+        9 => driven::<9, 19, 26>(p),
+        10 => driven::<10, 21, 27>(p),
+        11 => driven::<11, 23, 28>(p),
+        12 => driven::<12, 25, 29>(p),
+        13 => driven::<13, 27, 30>(p),
+        14 => driven::<14, 29, 31>(p),
+        15 => driven::<15, 31, 32>(p),
+        16 => driven::<16, 33, 33>(p),
+        17 => driven::<17, 35, 34>(p),
+        18 => driven::<18, 37, 35>(p),
+        19 => driven::<19, 39, 36>(p),
+        20 => driven::<20, 41, 37>(p),
+        21 => driven::<21, 43, 38>(p),
+        22 => driven::<22, 45, 39>(p),
+        23 => driven::<23, 47, 40>(p),
+        24 => driven::<24, 49, 41>(p),
+        25 => driven::<25, 51, 42>(p),
+        26 => driven::<26, 53, 43>(p),
+        27 => driven::<27, 55, 44>(p),
+        28 => driven::<28, 57, 45>(p),
+        29 => driven::<29, 59, 46>(p),
+        30 => driven::<30, 61, 47>(p),
+        31 => driven::<31, 63, 48>(p),
+        32 => driven::<32, 65, 49>(p),
+        other => unreachable!("counter width {other} passed validation"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use golden::params::Spec;
+
+    fn small() -> Params {
+        Params::new(Spec {
+            clock_hz: 1e6,
+            lines: 100,
+            dt_cycles: 200,
+            counter_bits: 12,
+            timeout_s: 20.0 * 200.0 / 1e6,
+        })
+        .unwrap()
+    }
+
+    #[test]
+    fn synthesises() {
+        let v = build_wb(&small()).verilog("top");
+        yosys_validate("encspeed_wb", &v).unwrap();
+    }
+
+    /// `verilator --lint-only -Wall` on the emitted top with the core's waivers
+    /// (tb/verilator/waivers.vlt, retargeted to this file) and the top's own
+    /// (tb/verilator/wb_waivers.vlt): any other warning fails.
+    #[test]
+    fn verilator_lint_is_clean_with_the_documented_waivers() {
+        let core = include_str!("../../tb/verilator/waivers.vlt");
+        let top = include_str!("../../tb/verilator/wb_waivers.vlt");
+        for p in [small(), Params::new(Spec::default()).unwrap()] {
+            let v = build_wb(&p).verilog("encspeed_wb");
+            let target = match std::env::var_os("CARGO_TARGET_DIR") {
+                Some(d) => std::path::PathBuf::from(d),
+                None => std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../target")),
+            };
+            let dir = target
+                .join("block_lint")
+                .join(format!("encspeed_wb-{}", p.counter_bits()));
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(dir.join("encspeed_wb.v"), &v).unwrap();
+            let waivers = format!(
+                "{}\n{}",
+                core.replace("*encspeed_core.v", "*encspeed_wb.v"),
+                top.trim_start_matches("`verilator_config")
+            );
+            std::fs::write(dir.join("waivers.vlt"), waivers).unwrap();
+            let out = std::process::Command::new("verilator")
+                .current_dir(&dir)
+                .args(["--lint-only", "-Wall", "--top-module", "encspeed_wb"])
+                .args(["waivers.vlt", "encspeed_wb.v"])
+                .output()
+                .expect("cannot run verilator");
+            let text = String::from_utf8_lossy(&out.stderr);
+            assert!(
+                out.status.success() && !text.contains("%Warning") && !text.contains("%Error"),
+                "verilator --lint-only -Wall in {}:\n{text}",
+                dir.display()
+            );
+        }
+    }
+}
