@@ -520,9 +520,15 @@ fn assert_covered(cov: &Coverage, cases: u32, small: bool) {
         "non-zero speeds are read: {cov:?}"
     );
     assert!(cov.valid_cycles > 0 && cov.irq_cycles > 0, "{cov:?}");
-    assert!(cov.mode_changes >= n / 2 && cov.fault_cycles > 0, "{cov:?}");
+    assert!(cov.mode_changes >= n / 2, "{cov:?}");
+    // Faults, their clearing and the index come from random glitches and Z pulses: the 48
+    // cases of each small run are sure to hold some; the 10 default-parameter cases are not
+    // (their inputs are random each run), so they are not required there.
     if small {
-        assert!(cov.clear_faults > 0 && cov.index > 0, "{cov:?}");
+        assert!(
+            cov.fault_cycles > 0 && cov.clear_faults > 0 && cov.index > 0,
+            "{cov:?}"
+        );
     }
 }
 
