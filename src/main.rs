@@ -9,6 +9,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
+mod identify;
+
 #[derive(Parser)]
 #[command(
     name = "encspeed",
@@ -84,6 +86,11 @@ enum Cmd {
         /// pc (pulse count), et (elapsed time), n3 (Rairán, bit-true core) or mt (M/T).
         #[arg(long, value_parser = ["pc", "et", "n3", "mt"])]
         estimator: String,
+        /// float: PC, ET, M/T as float estimators; hardware: the core's speed_pc,
+        /// speed_et, speed_mt read at baseline_strobe (x1/x2/x4 as --edges, model delayed
+        /// by the hardware latency) [default float; n3: hardware, its only source].
+        #[arg(long, value_parser = ["float", "hardware"])]
+        source: Option<String>,
         /// Lines of the disc.
         #[arg(long)]
         lines: u32,
@@ -96,7 +103,8 @@ enum Cmd {
         /// Control sample time T_s, s (for n3 also dt).
         #[arg(long, allow_negative_numbers = true)]
         ts_s: f64,
-        /// Clock of the ET/M/T timestamps and of the n3 core, Hz [default 100e6; n3: 10e6].
+        /// Clock of the float ET/M/T timestamps, or of the core (n3, --source hardware),
+        /// Hz [default 100e6; on the core 10e6].
         #[arg(long, allow_negative_numbers = true)]
         clock_hz: Option<f64>,
         /// Modulation depth ñ/n̄ [default 0.02; n3: 0.2].
@@ -155,6 +163,13 @@ enum Cmd {
         #[arg(long)]
         threads: Option<usize>,
     },
+    /// Identify the disc eccentricity e and its phase θ0 from one revolution between two
+    /// Z pulses, of a scenario (golden plant) or of a VCD of A/B/Z.
+    ///
+    /// Prints e and θ0 by the paper's method (eqs. 17-20 as printed), the ratio method and
+    /// the harmonic fit (recommended; also with a 2nd harmonic), the mean speed and the
+    /// corrector coefficients. See docs/eccentricity.md.
+    Identify(identify::IdentifyArgs),
 }
 
 /// Generation parameters, shared by every subcommand that builds the core: the defaults
@@ -463,6 +478,7 @@ fn main() -> ExitCode {
         } => spec.run(|p| synth(p, &device, &package)),
         Cmd::Bode {
             estimator,
+            source,
             lines,
             edges,
             rpm,
@@ -478,9 +494,19 @@ fn main() -> ExitCode {
             svg,
             title,
         } => {
-            let mut spec = match estimator.parse() {
-                Ok(e) => golden::freqresp::BodeSpec::new(e, lines, rpm, ts_s),
+            use golden::freqresp::{BodeSpec, Source};
+            let source = match source.as_deref().map(str::parse::<Source>).transpose() {
+                Ok(s) => s,
                 Err(e) => return fail(2, format!("bode: --{e}")),
+            };
+            let mut spec = match (estimator.parse(), source) {
+                (Ok(e), Some(Source::Hardware)) => BodeSpec::hardware(e, lines, rpm, ts_s),
+                (Ok(e), Some(Source::Float)) => BodeSpec {
+                    source: Source::Float,
+                    ..BodeSpec::new(e, lines, rpm, ts_s)
+                },
+                (Ok(e), None) => BodeSpec::new(e, lines, rpm, ts_s),
+                (Err(e), _) => return fail(2, format!("bode: --{e}")),
             };
             spec.edges = edges.unwrap_or(spec.edges);
             spec.clock_hz = clock_hz.unwrap_or(spec.clock_hz);
@@ -505,6 +531,7 @@ fn main() -> ExitCode {
             svg,
             threads,
         } => accuracy(points, &mode, &svg, threads),
+        Cmd::Identify(args) => identify::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -781,10 +808,15 @@ fn bode(
             op.l()
         )
     };
+    // The hardware baselines: where they are read and how late (the model includes it).
+    let hw = exp
+        .hardware_latency_cycles()
+        .map(|d| format!(" (hardware, {} MHz, latency {d} cycles)", s.clock_hz / 1e6));
     let caption = title.unwrap_or_else(|| {
         format!(
-            "{}: {r_name}, {} r/min, Ts = {} ms",
+            "{}{}: {r_name}, {} r/min, Ts = {} ms",
             s.estimator.name().to_uppercase(),
+            hw.as_deref().unwrap_or(""),
             s.rpm,
             s.ts_s * 1e3
         )

@@ -13,7 +13,8 @@
 //!    2 both edges of A, 4 every edge of A and B (quadrature ×4). The paper's R is this R
 //!    (its Table I: 1, 2 or 4 times the lines).
 //! 2. **Estimators**, each producing one value y_k per control sample t_k = k·T_s (k ≥ 1),
-//!    in rev/s, the latest estimate at t_k as a sampled controller reads it:
+//!    in rev/s, the latest estimate at t_k as a sampled controller reads it (the float
+//!    estimators and n3; the hardware PC, ET, M/T are read at their strobe, below):
 //!    - [`Estimator::Pc`], fixed time: transitions counted in the window from t_(k−1)
 //!      (included) to t_k (excluded) ([`ideal::fixed_time`]), divided by R·T_s.
 //!    - [`Estimator::Et`], fixed space: the time between the last two transitions before
@@ -41,6 +42,30 @@
 //!    H and is what is compared with the models; [`Measurement::h_sampled`] is kept. The
 //!    measured phase is reported on the model's branch (the difference wrapped into
 //!    (−180°, 180°]).
+//!
+//! **On the hardware** ([`Source::Hardware`]; n3 always). The bit-true core
+//! ([`CoreModel`]) is stepped at `clock_hz` on the sampled levels of A, B and Z (cycle c
+//! carries the levels at t = c/f_clk; 3 cycles of reset; `cfg_dt` = dt = T_s·f_clk;
+//! `cfg_mode` x1, x2, x4 for `edges` 1, 2, 4). PC, ET and M/T are the outputs
+//! `speed_pc`, `speed_et`, `speed_mt` (Q(N).F in units of ω_lim, one line per dt), whose
+//! windows are those of the free-running `cfg_dt` time base; they are **read at their
+//! `baseline_strobe`**, the cycle k·dt + 3 + L ([`Experiment::read_offset_cycles`], L =
+//! [`baseline_latency_cycles`]), not at k·T_s: the strobe is periodic with T_s, it is the
+//! earliest instant the estimate exists, and a controller that takes its samples from it
+//! sees exactly this; a controller sampling at other instants adds the age of the last
+//! strobe, a pure delay it knows. The analysis puts each value at the instant it was read
+//! (the bin is rotated by e^{−j2πf·c}, c the read offset), so the measurement is the
+//! estimator's window response times the hardware's delay from window end to strobe,
+//! D = [`window_to_strobe_cycles`] (about 70 cycles), and the model compared is the float
+//! estimator's model × e^{−sD} ([`FreqModel::delayed`]). The clock quantises each
+//! transition to the next clock edge: PC's window stays an exact interval of plant time
+//! (no effect in expectation); ET's period and M/T's span are whole cycles, within one
+//! cycle of the truth and unbiased when the encoder phase against the clock is uniform,
+//! so what is left is an error of ±1 cycle per period (±1/P relative for a period of P
+//! cycles), a pattern of the encoder phase against the clock, not white noise, whose
+//! share in the DFT bin falls as 1/ñ. M/T on the hardware needs a step in
+//! every window (an empty window gives `speed_mt` = 0): l·(1 − ñ/n̄) ≥ 1
+//! ([`FreqRespError::MtEmptyWindows`]).
 //!
 //! **Asynchrony (why the mean speed is detuned).** The small-signal models describe the
 //! response averaged over the phase of the encoder relative to the sample instants (the
@@ -91,7 +116,8 @@ pub const DEFAULT_AMPLITUDE: f64 = 0.02;
 pub const DEFAULT_AMPLITUDE_N3: f64 = 0.2;
 /// Default clock (Hz) of the ET and M/T timestamps.
 pub const DEFAULT_CLOCK_HZ: f64 = 100e6;
-/// Default clock (Hz) of the n3 core, which is simulated cycle by cycle.
+/// Default clock (Hz) of the core, which is simulated cycle by cycle: n3 and every
+/// [`Source::Hardware`] measurement.
 pub const DEFAULT_CLOCK_HZ_N3: f64 = 10e6;
 /// Default least number of modulation periods in the analysis window.
 pub const DEFAULT_MIN_PERIODS: u32 = 8;
@@ -134,19 +160,55 @@ impl Estimator {
     }
 }
 
-impl fmt::Display for Estimator {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
+/// `Display` as `name()`, and `FromStr` finding the name among `ALL` (an unknown name is
+/// the error `$unknown`), for the option enums of `encspeed bode`.
+macro_rules! named_option {
+    ($t:ident, $unknown:path) => {
+        impl fmt::Display for $t {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+
+        impl FromStr for $t {
+            type Err = FreqRespError;
+            fn from_str(s: &str) -> Result<Self, Self::Err> {
+                $t::ALL
+                    .into_iter()
+                    .find(|e| e.name() == s)
+                    .ok_or_else(|| $unknown(s.to_owned()))
+            }
+        }
+    };
 }
 
-impl FromStr for Estimator {
-    type Err = FreqRespError;
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Estimator::ALL
-            .into_iter()
-            .find(|e| e.name() == s)
-            .ok_or_else(|| FreqRespError::UnknownEstimator(s.to_owned()))
+named_option!(Estimator, FreqRespError::UnknownEstimator);
+named_option!(Source, FreqRespError::UnknownSource);
+
+/// Where PC, ET and M/T are measured: on the float estimators of [`ideal`] and [`mt`], or
+/// on the core's hardware outputs `speed_pc`, `speed_et`, `speed_mt` (the bit-true
+/// [`CoreModel`], whose every cycle the Verilog is checked against in `tb::freqresp`).
+/// n3 exists on the core only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Source {
+    /// The float estimators: exact transition instants, timestamps quantised to `clock_hz`,
+    /// read at the sample instants, no computation latency.
+    Float,
+    /// The core's outputs (x1, x2 or x4 decoding as `edges` 1, 2, 4), window dt = T_s of
+    /// the free-running `cfg_dt` time base, read at each `baseline_strobe` (module docs).
+    Hardware,
+}
+
+impl Source {
+    /// Both, in the order of the docs.
+    pub const ALL: [Source; 2] = [Source::Float, Source::Hardware];
+
+    /// Short name: `float`, `hardware`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Source::Float => "float",
+            Source::Hardware => "hardware",
+        }
     }
 }
 
@@ -156,6 +218,10 @@ impl FromStr for Estimator {
 pub enum FreqRespError {
     /// Not one of `pc`, `et`, `n3`, `mt`.
     UnknownEstimator(String),
+    /// Not one of `float`, `hardware`.
+    UnknownSource(String),
+    /// n3 exists on the core only: [`Source::Float`] is refused for it.
+    FloatN3,
     /// `lines` is zero.
     Lines(u32),
     /// `edges` is not 1, 2 or 4, or not 1 for n3 (the core counts rising edges of A).
@@ -182,15 +248,31 @@ pub enum FreqRespError {
     },
     /// The operating point is out of the models' range.
     OperatingPoint(SmallSignalError),
-    /// n3 needs T_s to be a whole number ≥ 2 of clock periods (dt = T_s).
+    /// The core needs T_s to be a whole number ≥ 2 of clock periods (dt = T_s).
     DtCycles {
         /// T_s in s.
         ts_s: f64,
         /// The clock in Hz.
         clock_hz: f64,
     },
-    /// The n3 core cannot be built for these values.
+    /// The core cannot be built for these values.
     Core(ParamError),
+    /// [`Source::Hardware`]: dt = T_s·clock is shorter than the baselines' computation
+    /// latency, so windows would share a `baseline_strobe` (a start while busy replaces
+    /// the pending request).
+    HardwareWindow {
+        /// dt, clock cycles.
+        dt_cycles: u64,
+        /// The latency of the baseline speeds block, clock cycles.
+        latency_cycles: u64,
+    },
+    /// [`Source::Hardware`] M/T with fewer than one transition per window at the slowest
+    /// speed: the core outputs `speed_mt` = 0 for a window without steps, which is no
+    /// speed estimate (ET is the estimator for that range).
+    MtEmptyWindows {
+        /// Transitions per T_s at the slowest speed, l·(1 − ñ/n̄).
+        l_min: f64,
+    },
     /// A frequency (Hz) is not finite, > 0 and below the control Nyquist frequency 1/(2T_s).
     Frequency {
         /// The frequency asked for.
@@ -220,11 +302,12 @@ pub enum FreqRespError {
 impl FreqRespError {
     /// The parameter the error is about, as the `encspeed bode` option spells it without
     /// the dashes (`lines`, `edges`, `rpm`, `ts-s`, `clock-hz`, `amplitude`, `detune`,
-    /// `fmin`, `fmax`, `points`, `estimator`).
+    /// `fmin`, `fmax`, `points`, `estimator`, `source`).
     pub fn parameter(&self) -> &'static str {
         use FreqRespError as E;
         match self {
             E::UnknownEstimator(_) => "estimator",
+            E::UnknownSource(_) | E::FloatN3 => "source",
             E::Lines(_) => "lines",
             E::Edges { .. } => "edges",
             E::Rpm(_) => "rpm",
@@ -234,7 +317,8 @@ impl FreqRespError {
             E::Detune(_) => "detune",
             E::Window { name } => name,
             E::OperatingPoint(_) => "rpm",
-            E::Core(_) => "clock-hz",
+            E::Core(_) | E::HardwareWindow { .. } => "clock-hz",
+            E::MtEmptyWindows { .. } => "rpm",
             E::Frequency { .. } => "fmax",
             E::Sweep {
                 fmin_hz, points, ..
@@ -259,6 +343,13 @@ impl fmt::Display for FreqRespError {
             E::UnknownEstimator(s) => {
                 write!(f, "estimator `{s}` is unknown: use pc, et, n3 or mt")
             }
+            E::UnknownSource(s) => {
+                write!(f, "source `{s}` is unknown: use float or hardware")
+            }
+            E::FloatN3 => write!(
+                f,
+                "source = float: n3 exists on the core only (use source hardware)"
+            ),
             E::Lines(v) => write!(f, "lines = {v}: the disc needs at least one line"),
             E::Edges { estimator, edges } => match estimator {
                 Estimator::N3 => write!(
@@ -280,11 +371,26 @@ impl fmt::Display for FreqRespError {
             E::OperatingPoint(e) => write!(f, "rpm: {e}"),
             E::DtCycles { ts_s, clock_hz } => write!(
                 f,
-                "clock-hz = {clock_hz}: n3 needs ts-s x clock-hz = {} to be a whole number \
-                 >= 2 of clock cycles (dt = T_s = {ts_s} s)",
+                "clock-hz = {clock_hz}: the core needs ts-s x clock-hz = {} to be a whole \
+                 number >= 2 of clock cycles (dt = T_s = {ts_s} s)",
                 ts_s * clock_hz
             ),
-            E::Core(e) => write!(f, "clock-hz: the n3 core cannot be built: {e}"),
+            E::Core(e) => write!(f, "clock-hz: the core cannot be built: {e}"),
+            E::HardwareWindow {
+                dt_cycles,
+                latency_cycles,
+            } => write!(
+                f,
+                "clock-hz: dt = ts-s x clock-hz = {dt_cycles} cycles is shorter than the \
+                 baseline speeds' latency of {latency_cycles} cycles; every window needs \
+                 its own baseline_strobe"
+            ),
+            E::MtEmptyWindows { l_min } => write!(
+                f,
+                "rpm: M/T on the hardware needs at least one transition per T_s at the \
+                 slowest speed, rpm x (1 - amplitude), which has {l_min:.4}: the core \
+                 outputs speed_mt = 0 for a window without steps (measure et there)"
+            ),
             E::Frequency { f_hz, nyquist_hz } => write!(
                 f,
                 "fmax: frequency {f_hz} Hz must be finite, > 0 and below the control Nyquist \
@@ -316,6 +422,8 @@ impl std::error::Error for FreqRespError {}
 pub struct BodeSpec {
     /// Which estimator.
     pub estimator: Estimator,
+    /// Float estimators or the core's outputs; n3 is [`Source::Hardware`] only.
+    pub source: Source,
     /// Lines of the disc.
     pub lines: u32,
     /// Edges counted per line: 1 (A rising), 2 (A both) or 4 (A and B both); R = lines·edges.
@@ -323,9 +431,9 @@ pub struct BodeSpec {
     pub edges: u32,
     /// Nominal mean speed n̄, r/min (> 0).
     pub rpm: f64,
-    /// Control sample time T_s, s; for n3 also dt.
+    /// Control sample time T_s, s; on the core also dt.
     pub ts_s: f64,
-    /// Clock of the ET/M/T timestamps and of the n3 core, Hz. PC ignores it.
+    /// Clock of the float ET/M/T timestamps (float PC ignores it), or of the core, Hz.
     pub clock_hz: f64,
     /// Modulation depth ñ/n̄, in (0, 0.5].
     pub amplitude: f64,
@@ -342,10 +450,12 @@ impl BodeSpec {
     /// ([`DEFAULT_CLOCK_HZ_N3`] for n3), amplitude [`DEFAULT_AMPLITUDE`]
     /// ([`DEFAULT_AMPLITUDE_N3`] for n3), [`DEFAULT_DETUNE`], [`DEFAULT_MIN_PERIODS`],
     /// [`DEFAULT_MIN_SAMPLES`].
+    /// PC, ET and M/T are [`Source::Float`] here, n3 [`Source::Hardware`].
     pub fn new(estimator: Estimator, lines: u32, rpm: f64, ts_s: f64) -> BodeSpec {
         let n3 = estimator == Estimator::N3;
         BodeSpec {
             estimator,
+            source: if n3 { Source::Hardware } else { Source::Float },
             lines,
             edges: if n3 { 1 } else { 4 },
             rpm,
@@ -365,6 +475,22 @@ impl BodeSpec {
             min_samples: DEFAULT_MIN_SAMPLES,
         }
     }
+
+    /// [`BodeSpec::new`] measured on the core's outputs: [`Source::Hardware`] with the
+    /// core's clock [`DEFAULT_CLOCK_HZ_N3`]; `edges` 4 (x4, `cfg_mode` = 2) for PC, ET and
+    /// M/T. For n3 the same as [`BodeSpec::new`].
+    pub fn hardware(estimator: Estimator, lines: u32, rpm: f64, ts_s: f64) -> BodeSpec {
+        BodeSpec {
+            source: Source::Hardware,
+            clock_hz: DEFAULT_CLOCK_HZ_N3,
+            ..BodeSpec::new(estimator, lines, rpm, ts_s)
+        }
+    }
+
+    /// The experiment runs on the core (n3, or any estimator on [`Source::Hardware`]).
+    pub fn on_core(&self) -> bool {
+        self.source == Source::Hardware
+    }
 }
 
 /// The model an experiment is compared with, including the S/H ZOH(s, T_s).
@@ -374,13 +500,21 @@ pub enum FreqModel {
     Product(Model),
     /// The M/T model for l ≥ 1 (derived in the docs): a mixture of windows of ⌊l⌋ and
     /// ⌊l⌋ + 1 transition intervals ending at a transition of uniformly distributed age,
-    /// times ZOH(s, T_s).
+    /// times ZOH(s, T_s), times e^{−s·latency_s}.
     MtMixture {
         /// Time between transitions T_e, s.
         te_s: f64,
         /// T_s, s.
         ts_s: f64,
+        /// A pure delay after the estimator (the hardware's latency), s; 0 for the float
+        /// estimator.
+        latency_s: f64,
     },
+}
+
+/// Label of the pure delay [`FreqModel::delayed`] appends.
+fn latency_label(latency_s: f64) -> String {
+    format!("e^(-s·{:.2} µs)", latency_s * 1e6)
 }
 
 impl FreqModel {
@@ -388,7 +522,43 @@ impl FreqModel {
     pub fn name(&self) -> String {
         match self {
             FreqModel::Product(m) => m.name().to_owned(),
-            FreqModel::MtMixture { .. } => "M/T (derived mixture) · ZOH(Ts)".to_owned(),
+            FreqModel::MtMixture { latency_s, .. } => {
+                let mut s = "M/T (derived mixture) · ZOH(Ts)".to_owned();
+                if *latency_s > 0.0 {
+                    s = format!("{s} · {}", latency_label(*latency_s));
+                }
+                s
+            }
+        }
+    }
+
+    /// This model followed by the pure delay e^{−s·`latency_s`}, `latency_s` > 0: how a
+    /// hardware estimator that publishes its result `latency_s` after the end of its
+    /// window compares with the paper's model of the same window (module docs).
+    pub fn delayed(&self, latency_s: f64) -> FreqModel {
+        assert!(
+            latency_s.is_finite() && latency_s > 0.0,
+            "latency {latency_s}"
+        );
+        match self {
+            FreqModel::Product(m) => FreqModel::Product(
+                m.times(
+                    &Model::new(
+                        latency_label(latency_s),
+                        vec![Factor::Delay { t_s: latency_s }],
+                    )
+                    .expect("a finite delay > 0"),
+                ),
+            ),
+            FreqModel::MtMixture {
+                te_s,
+                ts_s,
+                latency_s: l0,
+            } => FreqModel::MtMixture {
+                te_s: *te_s,
+                ts_s: *ts_s,
+                latency_s: l0 + latency_s,
+            },
         }
     }
 
@@ -396,7 +566,14 @@ impl FreqModel {
     pub fn response(&self, f_hz: f64) -> Complex64 {
         match self {
             FreqModel::Product(m) => m.polar(f_hz).to_complex(),
-            FreqModel::MtMixture { te_s, ts_s } => mt_mixture(f_hz, *te_s, *ts_s),
+            FreqModel::MtMixture {
+                te_s,
+                ts_s,
+                latency_s,
+            } => {
+                mt_mixture(f_hz, *te_s, *ts_s)
+                    * Complex64::from_polar(1.0, -2.0 * PI * f_hz * latency_s)
+            }
         }
     }
 
@@ -404,14 +581,18 @@ impl FreqModel {
     pub fn low_frequency_delay_s(&self) -> f64 {
         match self {
             FreqModel::Product(m) => m.low_frequency_delay_s(),
-            FreqModel::MtMixture { te_s, ts_s } => ts_s + te_s / 2.0,
+            FreqModel::MtMixture {
+                te_s,
+                ts_s,
+                latency_s,
+            } => ts_s + te_s / 2.0 + latency_s,
         }
     }
 
     /// Gain and phase at f (Hz), the phase continuous in f with the convention of
     /// [`crate::smallsignal::BodePoint::phase_deg`]. Both terms of the mixture have the
-    /// phase −2πf·D, D = T_s + T_e/2 (docs/frequency-response.md), so H·e^{j2πfD} is real
-    /// and is the signed amplitude.
+    /// phase −2πf·D, D = T_s + T_e/2 (+ the latency) (docs/frequency-response.md), so
+    /// H·e^{j2πfD} is real and is the signed amplitude.
     pub fn at(&self, f_hz: f64) -> BodePoint {
         match self {
             FreqModel::Product(m) => m.at(f_hz),
@@ -502,7 +683,11 @@ pub fn mt_model(op: &OperatingPoint) -> FreqModel {
             .expect("times of a validated operating point"),
         )
     } else {
-        FreqModel::MtMixture { te_s: te, ts_s: ts }
+        FreqModel::MtMixture {
+            te_s: te,
+            ts_s: ts,
+            latency_s: 0.0,
+        }
     }
 }
 
@@ -582,7 +767,11 @@ pub struct Experiment {
     spec: BodeSpec,
     op: OperatingPoint,
     model: FreqModel,
+    /// On the core: its parameters and dt in cycles.
     core: Option<(Params, u64)>,
+    /// On the core: sample k is the output after cycle k·dt + this (0 for n3; the
+    /// `baseline_strobe` for the hardware baselines).
+    read_offset: u64,
 }
 
 impl Experiment {
@@ -592,6 +781,9 @@ impl Experiment {
             return Err(FreqRespError::Lines(0));
         }
         let n3 = spec.estimator == Estimator::N3;
+        if n3 && spec.source == Source::Float {
+            return Err(FreqRespError::FloatN3);
+        }
         if (n3 && spec.edges != 1) || !matches!(spec.edges, 1 | 2 | 4) {
             return Err(FreqRespError::Edges {
                 estimator: spec.estimator,
@@ -630,19 +822,54 @@ impl Experiment {
         let sim_rpm = spec.rpm * (1.0 + spec.detune);
         let op =
             OperatingPoint::new(r, sim_rpm, spec.ts_s).map_err(FreqRespError::OperatingPoint)?;
-        let core = if n3 { Some(core_params(&spec)?) } else { None };
-        let model = match spec.estimator {
-            Estimator::Pc => FreqModel::Product(pc_model(&op)),
-            Estimator::Et => FreqModel::Product(Model::et_eq24(&op)),
-            Estimator::N3 => FreqModel::Product(n3_model(&op)),
-            Estimator::Mt => mt_model(&op),
+        let te_max_s = op.te_s() / (1.0 - spec.amplitude);
+        let core = if spec.on_core() {
+            Some(core_params(&spec, te_max_s)?)
+        } else {
+            None
         };
+        let mut model = paper_model(spec.estimator, &op);
+        let mut read_offset = 0;
+        if let (Some((p, dt)), false) = (&core, n3) {
+            let l = baseline_latency_cycles(p);
+            if *dt < l {
+                return Err(FreqRespError::HardwareWindow {
+                    dt_cycles: *dt,
+                    latency_cycles: l,
+                });
+            }
+            let l_min = op.l() * (1.0 - spec.amplitude);
+            if spec.estimator == Estimator::Mt && l_min < 1.0 {
+                return Err(FreqRespError::MtEmptyWindows { l_min });
+            }
+            let d = window_to_strobe_cycles(spec.estimator, p);
+            model = model.delayed(d as f64 / spec.clock_hz);
+            read_offset = RESET_CYCLES + l;
+        }
         Ok(Experiment {
             spec,
             op,
             model,
             core,
+            read_offset,
         })
+    }
+
+    /// [`Source::Hardware`] PC, ET and M/T: clock cycles from the end of the window the
+    /// estimate describes to the `baseline_strobe` that publishes it
+    /// ([`window_to_strobe_cycles`]); `None` otherwise.
+    pub fn hardware_latency_cycles(&self) -> Option<u64> {
+        match (&self.core, self.spec.estimator) {
+            (Some((p, _)), e) if e != Estimator::N3 => Some(window_to_strobe_cycles(e, p)),
+            _ => None,
+        }
+    }
+
+    /// On the core: sample k is the core's output after cycle k·dt + this many cycles
+    /// (0 for n3, read at the sample instants; [`RESET_CYCLES`] + the baseline block's
+    /// latency for the hardware baselines, the cycle of their `baseline_strobe`).
+    pub fn read_offset_cycles(&self) -> u64 {
+        self.read_offset
     }
 
     /// The specification.
@@ -663,11 +890,16 @@ impl Experiment {
     /// Other models to draw beside [`Experiment::model`], as the paper's figures do: for PC
     /// eq. (15) (l ≥ 1) and the literature's e^{−sT_s/2} (eq. 27); for ET the literature's
     /// e^{−sT_e} and ZOH(T_e) (eqs. 28, 29); for n3 and M/T the paper's PC and ET models at
-    /// the same operating point (eqs. 16, 24).
+    /// the same operating point (eqs. 16, 24). For the hardware baselines the model
+    /// without the hardware latency comes first (the float estimator's model).
     pub fn comparison_models(&self) -> Vec<FreqModel> {
         let op = &self.op;
         let product = FreqModel::Product;
-        match self.spec.estimator {
+        let mut v = Vec::new();
+        if self.hardware_latency_cycles().is_some() {
+            v.push(paper_model(self.spec.estimator, op));
+        }
+        v.extend(match self.spec.estimator {
             Estimator::Pc => {
                 let mut v: Vec<FreqModel> = Model::pc_eq15(op).into_iter().map(product).collect();
                 v.push(product(Model::literature_pc_eq27(op)));
@@ -680,11 +912,13 @@ impl Experiment {
             Estimator::N3 | Estimator::Mt => {
                 vec![product(pc_model(op)), product(Model::et_eq24(op))]
             }
-        }
+        });
+        v
     }
 
-    /// The n3 core's parameters (`None` for the other estimators): lines, dt = T_s in
-    /// clock cycles, counters wide enough for dt and a timeout of 1000 dt.
+    /// The core's parameters (`None` for [`Source::Float`]): lines, dt = T_s in clock
+    /// cycles, counters wide enough for dt and a timeout of 1000 dt (and for the hardware
+    /// baselines, for the ET period and M/T span at the slowest speed).
     pub fn core_params(&self) -> Option<&Params> {
         self.core.as_ref().map(|(p, _)| p)
     }
@@ -808,8 +1042,23 @@ impl Experiment {
             .collect()
     }
 
-    /// The estimator's output at t_k = k·T_s for k = 1 ..= settle + N, rev/s.
+    /// The estimator's output at t_k = k·T_s for k = 1 ..= settle + N, rev/s; on the
+    /// core, the output after cycle k·dt + [`Experiment::read_offset_cycles`].
     pub fn outputs(&self, plan: &Plan) -> Vec<f64> {
+        if self.core.is_some() {
+            let mut y = Vec::with_capacity(plan.total_samples() as usize);
+            let mut c = 0u64;
+            let mut core = CoreModel::new(self.core_params().expect("on the core"));
+            self.for_each_core_input(plan, |inp| {
+                let o = core.step(inp);
+                if let Some(k) = self.sample_of_cycle(c) {
+                    debug_assert_eq!(k, y.len() as u64 + 1);
+                    y.push(self.core_rps(&o));
+                }
+                c += 1;
+            });
+            return y;
+        }
         let ts = self.spec.ts_s;
         let k_total = plan.total_samples() as usize;
         let t_end = k_total as f64 * ts;
@@ -849,39 +1098,59 @@ impl Experiment {
                 }
                 y
             }
-            Estimator::N3 => {
-                let (p, dt) = self.core.as_ref().expect("n3 has a core");
-                let mut core = CoreModel::new(p);
-                let mut y = Vec::with_capacity(k_total);
-                let mut c = 0u64;
-                self.for_each_core_input(plan, |inp| {
-                    let o = core.step(inp);
-                    if c > 0 && c.is_multiple_of(*dt) {
-                        y.push(self.n3_rps(&o));
-                    }
-                    c += 1;
-                });
-                y
-            }
+            Estimator::N3 => unreachable!("n3 runs on the core"),
         }
     }
 
-    /// n3(Nep1, Ndt1) of one core output, rev/s.
-    fn n3_rps(&self, o: &CoreOutputs) -> f64 {
-        let (p, _) = self.core.as_ref().expect("n3 has a core");
-        ideal::n3(o.nep, o.ndt) * p.omega_lim_rps()
+    /// On the core: the sample k ≥ 1 whose value is read from the output after cycle `c`,
+    /// if any (c = k·dt + [`Experiment::read_offset_cycles`]).
+    fn sample_of_cycle(&self, c: u64) -> Option<u64> {
+        let (_, dt) = self.core.as_ref().expect("on the core");
+        let c = c.checked_sub(self.read_offset)?;
+        (c > 0 && c.is_multiple_of(*dt)).then_some(c / dt)
     }
 
-    /// n3 only: clock cycles simulated, settle·dt + N·dt + 1 (cycle 0 is t = 0).
+    /// The estimate in one core output, rev/s: n3(Nep1, Ndt1)·ω_lim for n3 (the float n3
+    /// of the registers, as the accuracy pages use it); `speed_pc`, `speed_et` or
+    /// `speed_mt`·2^−F·ω_lim for the baselines, which must be read at their strobe.
+    fn core_rps(&self, o: &CoreOutputs) -> f64 {
+        let (p, _) = self.core.as_ref().expect("on the core");
+        let raw = match self.spec.estimator {
+            Estimator::N3 => return ideal::n3(o.nep, o.ndt) * p.omega_lim_rps(),
+            Estimator::Pc => o.speed_pc,
+            Estimator::Et => o.speed_et,
+            Estimator::Mt => o.speed_mt,
+        };
+        assert!(
+            o.baseline_strobe,
+            "a hardware baseline read off its baseline_strobe: the timing of \
+             window_to_strobe_cycles no longer holds"
+        );
+        raw as f64 * 0.5f64.powi(p.speed_frac_bits() as i32) * p.omega_lim_rps()
+    }
+
+    /// On the core: clock cycles simulated, (settle + N)·dt + [`Experiment::read_offset_cycles`]
+    /// + 1 (cycle 0 is t = 0).
     pub fn core_cycles(&self, plan: &Plan) -> u64 {
-        let (_, dt) = self.core.as_ref().expect("n3 only");
-        plan.total_samples() * dt + 1
+        let (_, dt) = self.core.as_ref().expect("on the core");
+        plan.total_samples() * dt + self.read_offset + 1
     }
 
-    /// n3 only: the core's inputs, cycle c carrying the plant's levels at t = c/clock_hz,
-    /// reset for the first [`RESET_CYCLES`], `cfg_dt` = dt (as `tb::stimulus::from_profile`).
+    /// `cfg_mode` of the core: x1, x2, x4 for `edges` 1, 2, 4 (n3: x1).
+    pub fn cfg_mode(&self) -> u8 {
+        match self.spec.edges {
+            1 => 0,
+            2 => 1,
+            _ => 2,
+        }
+    }
+
+    /// On the core: its inputs, cycle c carrying the plant's levels at t = c/clock_hz,
+    /// reset for the first [`RESET_CYCLES`], `cfg_dt` = dt, `cfg_mode` =
+    /// [`Experiment::cfg_mode`] (for n3 exactly `tb::stimulus::from_profile`).
     pub fn for_each_core_input(&self, plan: &Plan, mut f: impl FnMut(CoreInputs)) {
-        let (_, dt) = self.core.as_ref().expect("n3 only");
+        let (_, dt) = self.core.as_ref().expect("on the core");
+        let cfg_mode = self.cfg_mode();
         let disc = Disc {
             lines: self.spec.lines,
         };
@@ -900,24 +1169,26 @@ impl Experiment {
                 enc_b: s.b,
                 enc_z: s.z,
                 cfg_dt: *dt,
+                cfg_mode,
                 ..CoreInputs::default()
             });
         }
     }
 
-    /// n3 only: [`Experiment::for_each_core_input`] collected (for co-simulation).
+    /// On the core: [`Experiment::for_each_core_input`] collected (for co-simulation).
     pub fn core_inputs(&self, plan: &Plan) -> Vec<CoreInputs> {
         let mut v = Vec::with_capacity(self.core_cycles(plan) as usize);
         self.for_each_core_input(plan, |i| v.push(i));
         v
     }
 
-    /// n3 only: the per-sample outputs (rev/s) from per-cycle core outputs, as
-    /// [`Experiment::outputs`] takes them: cycle k·dt for k = 1 ..= settle + N.
-    pub fn n3_outputs_from_core(&self, plan: &Plan, per_cycle: &[CoreOutputs]) -> Vec<f64> {
-        let (_, dt) = self.core.as_ref().expect("n3 only");
+    /// On the core: the per-sample outputs (rev/s) from per-cycle core outputs, as
+    /// [`Experiment::outputs`] takes them: cycle k·dt + [`Experiment::read_offset_cycles`]
+    /// for k = 1 ..= settle + N.
+    pub fn outputs_from_core(&self, plan: &Plan, per_cycle: &[CoreOutputs]) -> Vec<f64> {
+        let (_, dt) = self.core.as_ref().expect("on the core");
         (1..=plan.total_samples())
-            .map(|k| self.n3_rps(&per_cycle[(k * dt) as usize]))
+            .map(|k| self.core_rps(&per_cycle[(k * dt + self.read_offset) as usize]))
             .collect()
     }
 
@@ -941,7 +1212,14 @@ impl Experiment {
             s_out += e * (v - mean);
             s_in += e * (amp * theta.sin());
         }
-        let h_sampled = s_out / s_in;
+        let mut h_sampled = s_out / s_in;
+        if self.read_offset > 0 {
+            // Sample k is read at t_k + c, c = read_offset cycles: its bin at the instants
+            // it was read is e^{−j2πf·c} times the one computed at t_k, and the input's bin
+            // does not move (whole periods; module docs).
+            let c = self.read_offset as f64 / self.spec.clock_hz;
+            h_sampled *= Complex64::from_polar(1.0, -2.0 * PI * plan.f_hz * c);
+        }
         let h = h_sampled * zoh_at(plan.f_hz, self.spec.ts_s);
         let model = self.model.at(plan.f_hz);
         let gain_db = 20.0 * h.norm().log10();
@@ -1006,8 +1284,49 @@ impl Experiment {
     }
 }
 
-/// The n3 core's parameters for `spec` and dt in cycles.
-fn core_params(spec: &BodeSpec) -> Result<(Params, u64), FreqRespError> {
+/// The model of the estimator's window at the sample (or strobe) instants, including the
+/// S/H ZOH(T_s): PC eq. (16), ET eq. (24), and the derived n3 and M/T models.
+fn paper_model(estimator: Estimator, op: &OperatingPoint) -> FreqModel {
+    match estimator {
+        Estimator::Pc => FreqModel::Product(pc_model(op)),
+        Estimator::Et => FreqModel::Product(Model::et_eq24(op)),
+        Estimator::N3 => FreqModel::Product(n3_model(op)),
+        Estimator::Mt => mt_model(op),
+    }
+}
+
+/// Clock edges from a `start` of the baseline speeds block to its `baseline_strobe`:
+/// 2·(N + F + 1) + 3 ([`crate::baseline_speeds::latency_cycles`]).
+pub fn baseline_latency_cycles(p: &Params) -> u64 {
+    u64::from(crate::baseline_speeds::latency_cycles(
+        p.counter_bits(),
+        p.speed_frac_bits(),
+    ))
+}
+
+/// Clock cycles from the end of the window a hardware baseline describes, in plant time,
+/// to the `baseline_strobe` that publishes it: the latency the model is delayed by.
+///
+/// Cycle c samples the encoder at t = c/f_clk (an edge at t is seen first by cycle ⌈t·f⌉).
+/// A level sampled at cycle c reaches the counters as a decoder step at cycle c + E,
+/// E = [`crate::ports::Latency::edge_to_position`] (4 without the glitch filter). The
+/// time base ticks at edge T. PC's window holds the steps at edges T − dt … T − 1 (the
+/// tick's own step opens the next window), so it ends at the sampling cycle T − 1 − E;
+/// ET's last period and M/T's measurement include the step at edge T: they end at
+/// T − E. The block takes the `start` of the tick one edge later, T + 1, and publishes
+/// [`baseline_latency_cycles`] L after that. So D = L + 1 + E + 1 for PC, L + 1 + E for
+/// ET and M/T: with N = 13, F = 16 (dt = 1000 cycles at 3600 r/min), L = 63 and D = 69
+/// and 68 cycles.
+pub fn window_to_strobe_cycles(estimator: Estimator, p: &Params) -> u64 {
+    let e = u64::from(crate::ports::Latency::new(p, 0).edge_to_position);
+    let pc_extra = u64::from(estimator == Estimator::Pc);
+    baseline_latency_cycles(p) + 1 + e + pc_extra
+}
+
+/// The core's parameters for `spec` and dt in cycles. `te_max_s` is the longest time
+/// between transitions at the slowest speed (hardware baselines only: the ET period and
+/// the M/T span must fit the counters).
+fn core_params(spec: &BodeSpec, te_max_s: f64) -> Result<(Params, u64), FreqRespError> {
     let cycles = spec.ts_s * spec.clock_hz;
     let dt = cycles.round();
     if !(dt >= 2.0 && (cycles - dt).abs() <= 1e-9 * dt && dt < 2f64.powi(31)) {
@@ -1019,12 +1338,26 @@ fn core_params(spec: &BodeSpec) -> Result<(Params, u64), FreqRespError> {
     let dt = dt as u64;
     // Timeout: 1000 dt, far beyond any pulse period measured here (ñ ≤ n̄/2).
     let timeout_dt = 1000u64;
-    let bits = (bits_for(dt).max(bits_for(timeout_dt)) + 1).max(MIN_COUNTER_BITS);
+    let mut bits = (bits_for(dt).max(bits_for(timeout_dt)) + 1).max(MIN_COUNTER_BITS);
     if bits > MAX_COUNTER_BITS {
         return Err(FreqRespError::DtCycles {
             ts_s: spec.ts_s,
             clock_hz: spec.clock_hz,
         });
+    }
+    if spec.estimator != Estimator::N3 {
+        // The ET period (one transition interval P) must stay below 2^N − 1, where the
+        // timer saturates and reads as stalled, and the M/T span (at most dt + P) must
+        // fit: twice dt + P, with room for the clock's rounding. n3's width is unchanged.
+        let p_max = (te_max_s * spec.clock_hz).ceil() + 2.0;
+        let need = 2.0 * (dt as f64 + p_max);
+        let need_bits = if need < 2f64.powi(63) {
+            bits_for(need as u64) + 1
+        } else {
+            u64::BITS
+        };
+        // Params::new refuses a width beyond MAX_COUNTER_BITS with its reason.
+        bits = bits.max(need_bits);
     }
     let p = Params::new(Spec {
         clock_hz: spec.clock_hz,

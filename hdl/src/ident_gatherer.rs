@@ -12,7 +12,7 @@
 //!
 //! The two T × 24-bit signed multiply-adds are hand-written Verilog ([`IdentMac`] in `ident_mac.rs`, wider
 //! than rust-hdl's 16-bit multiply) with a matching `update()`, like
-//! [`EccArith`](crate::EccArith).
+//! [`EccDeltaArith`](crate::EccDeltaArith).
 //!
 //! Ports: `clock`, `reset` (synchronous, active high), `arm`, `index`, `line`,
 //! `position[A-1:0]`, `period[T-1:0]`; registered outputs `done`, `overflow`,

@@ -28,8 +28,10 @@
 //! |---|---|---|
 //! | [`SeqDivider`] | `seq_divider.rs` | unsigned radix-2 divider, one quotient bit per clock |
 //! | [`SineRom`] | `sine_rom.rs` | sine table of K entries at (m + m0) mod K, registered read |
-//! | [`EccArith`] | `ecc_arith.rs` | the corrector's multiply-and-round stage (custom Verilog) |
-//! | [`EccCorrector`] | `ecc_corrector.rs` | first-harmonic eccentricity correction of a line count, N_c in Q25.24 |
+//! | [`EccDelta`] | `ecc_delta.rs` | eccentricity correction δ of a span (fractional positions, exact θ0), sequential, 68 cycles |
+//! | [`EccDeltaArith`] | `ecc_delta_arith.rs` | `EccDelta`'s datapath: decode, interpolation, shift-add step (custom Verilog) |
+//! | [`EccMtSpeed`] | `ecc_mt_speed.rs` | the M/T speed of the corrected count, ±round((m − δ)·dt·2^(F−s)/t), 2N + F + 4 cycles |
+//! | [`EccN3`] | `ecc_n3.rs` | Rairán's n3 with the correction δ of its span: n3·(1 − δ) at Nep1 = 1, n3 − δ at Ndt1 = 1; 20 cycles |
 //! | [`IdentGatherer`] | `ident_gatherer.rs` | between two Z pulses: N, T_min/T_max and positions, Σ T, Σ T·sin, Σ T·cos; sticky `done` |
 //! | [`IdentMac`] | `ident_mac.rs` | the gatherer's two T × 24-bit multiply-adds (custom Verilog) |
 //!
@@ -38,8 +40,10 @@
 
 pub mod baseline_speeds;
 pub mod core;
-pub mod ecc_arith;
-pub mod ecc_corrector;
+pub mod ecc_delta;
+pub mod ecc_delta_arith;
+pub mod ecc_mt_speed;
+pub mod ecc_n3;
 pub mod emit;
 pub mod emit_wb;
 pub mod et_timer;
@@ -68,8 +72,10 @@ pub mod wishbone_top;
 
 pub use crate::core::EncspeedCore;
 pub use baseline_speeds::{baseline_speeds_verilog, BaselineSpeeds};
-pub use ecc_arith::EccArith;
-pub use ecc_corrector::{ecc_corrector_verilog, EccCorrector};
+pub use ecc_delta::{ecc_delta_verilog, EccDelta};
+pub use ecc_delta_arith::EccDeltaArith;
+pub use ecc_mt_speed::{ecc_mt_speed_verilog, EccMtSpeed};
+pub use ecc_n3::{ecc_n3_verilog, EccN3};
 pub use emit::{emit_core, EmitInfo};
 pub use emit_wb::emit_wb;
 pub use et_timer::{et_timer_verilog, EtTimer};

@@ -71,6 +71,7 @@ macro_rules! seq_width {
         }
     };
 }
+pub(crate) use seq_width;
 
 struct Driven<const N: usize, const P: usize, const S: usize> {
     uut: EncspeedCore<N, P, S>,

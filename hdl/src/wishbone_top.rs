@@ -278,34 +278,7 @@ fn driven<const N: usize, const P: usize, const S: usize>(p: &Params) -> Box<dyn
 /// the emitted Verilog's; apply `reset` before relying on the outputs).
 pub fn build_wb(p: &Params) -> Box<dyn WbSim> {
     // The same width dispatch as `crate::sim::build_core` (N → <N, 2N + 1, N + 17>).
-    match p.counter_bits() {
-        8 => driven::<8, 17, 25>(p),
-        9 => driven::<9, 19, 26>(p),
-        10 => driven::<10, 21, 27>(p),
-        11 => driven::<11, 23, 28>(p),
-        12 => driven::<12, 25, 29>(p),
-        13 => driven::<13, 27, 30>(p),
-        14 => driven::<14, 29, 31>(p),
-        15 => driven::<15, 31, 32>(p),
-        16 => driven::<16, 33, 33>(p),
-        17 => driven::<17, 35, 34>(p),
-        18 => driven::<18, 37, 35>(p),
-        19 => driven::<19, 39, 36>(p),
-        20 => driven::<20, 41, 37>(p),
-        21 => driven::<21, 43, 38>(p),
-        22 => driven::<22, 45, 39>(p),
-        23 => driven::<23, 47, 40>(p),
-        24 => driven::<24, 49, 41>(p),
-        25 => driven::<25, 51, 42>(p),
-        26 => driven::<26, 53, 43>(p),
-        27 => driven::<27, 55, 44>(p),
-        28 => driven::<28, 57, 45>(p),
-        29 => driven::<29, 59, 46>(p),
-        30 => driven::<30, 61, 47>(p),
-        31 => driven::<31, 63, 48>(p),
-        32 => driven::<32, 65, 49>(p),
-        other => unreachable!("counter width {other} passed validation"),
-    }
+    crate::sim::seq_width!(p.counter_bits(), driven, p)
 }
 
 #[cfg(test)]

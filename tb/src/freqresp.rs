@@ -1,10 +1,13 @@
-//! The frequency response of n3 measured on the emitted Verilog, and Bode figures.
+//! The frequency response of the core's estimators measured on the emitted Verilog, and
+//! Bode figures.
 //!
-//! [`measure_on_verilog`] runs the plan of a [`golden::freqresp::Experiment`] through the
-//! Verilog that ships (`hdl::emit_core`, compiled by Verilator), checks that every cycle
-//! equals the bit-true model, and analyses the outputs with the same code as the golden
-//! measurement; so the gain and phase are those of the hardware, and equal to the golden
-//! ones bit for bit. [`draw_svg`] draws a Bode figure (gain and phase against log f, models
+//! [`measure_on_verilog`] runs the plan of a [`golden::freqresp::Experiment`] on the core
+//! (n3, or PC, ET, M/T with [`golden::freqresp::Source::Hardware`]: the outputs
+//! `speed_pc`, `speed_et`, `speed_mt` read at `baseline_strobe`) through the Verilog that
+//! ships (`hdl::emit_core`, compiled by Verilator), checks that every cycle of every
+//! output equals the bit-true model, and analyses the outputs with the same code as the
+//! golden measurement; so the gain and phase are those of the hardware, and equal to the
+//! golden ones bit for bit. [`draw_svg`] draws a Bode figure (gain and phase against log f, models
 //! as lines, measurements as markers) with plotters' SVG backend (no fonts needed).
 
 use crate::cosim::{first_mismatch, run_golden};
@@ -13,18 +16,23 @@ use golden::freqresp::{Experiment, FreqModel, Measurement};
 use plotters::prelude::*;
 use std::path::Path;
 
-/// Compile the emitted Verilog of an n3 experiment's core (cached by content).
+/// Compile the emitted Verilog of an experiment's core (cached by content).
 pub fn verilated_for(exp: &Experiment) -> Result<Verilated, String> {
-    let p = exp
-        .core_params()
-        .ok_or_else(|| format!("{} has no hardware core (n3 only)", exp.spec().estimator))?;
+    let p = exp.core_params().ok_or_else(|| {
+        format!(
+            "{} on source {} has no core",
+            exp.spec().estimator,
+            exp.spec().source
+        )
+    })?;
     Verilated::build(&hdl::emit_core(p).verilog)
 }
 
-/// Measure an n3 experiment at `f_hz` on the emitted Verilog: the same per-cycle inputs
-/// as the golden measurement, every output cycle checked against the bit-true model (an
-/// error names the first differing cycle), then the same analysis. The result equals
-/// `exp.measure(f_hz)` exactly when the hardware is right.
+/// Measure an experiment on the core at `f_hz` on the emitted Verilog: the same per-cycle
+/// inputs as the golden measurement (`cfg_mode` included), every output of every cycle
+/// checked against the bit-true model (an error names the first differing cycle), then
+/// the same reading of the outputs (cycle k·dt + `read_offset_cycles`) and the same
+/// analysis. The result equals `exp.measure(f_hz)` exactly when the hardware is right.
 pub fn measure_on_verilog(
     exp: &Experiment,
     sim: &Verilated,
@@ -32,7 +40,7 @@ pub fn measure_on_verilog(
 ) -> Result<Measurement, String> {
     let p = exp
         .core_params()
-        .ok_or_else(|| "measure_on_verilog: n3 only".to_string())?;
+        .ok_or_else(|| "measure_on_verilog: the experiment is not on the core".to_string())?;
     let plan = exp.plan(f_hz).map_err(|e| e.to_string())?;
     let inputs = exp.core_inputs(&plan);
     let out = sim.run(&inputs, None)?;
@@ -43,7 +51,7 @@ pub fn measure_on_verilog(
             inputs.len()
         ));
     }
-    let y = exp.n3_outputs_from_core(&plan, &out);
+    let y = exp.outputs_from_core(&plan, &out);
     Ok(exp.analyse(&plan, &y))
 }
 

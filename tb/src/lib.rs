@@ -11,6 +11,7 @@ pub mod freqresp;
 pub mod icarus;
 pub mod scenarios;
 pub mod stimulus;
+pub mod stream_harness;
 pub mod verilator;
 pub mod waves;
 pub mod wb_verilator;

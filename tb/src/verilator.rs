@@ -5,10 +5,10 @@
 //! returns per-cycle outputs in the same form as the golden model. A missing `verilator` is
 //! an error, never a skip: `.ci/run` installs it.
 
+use crate::stream_harness;
 use golden::bittrue::{CoreInputs, CoreOutputs};
-use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 const HARNESS: &str = include_str!("../verilator/harness.cpp");
 /// Lint waivers for the emitted Verilog (each one explained in the file).
@@ -42,32 +42,20 @@ fn signed(raw: u64, bits: u32) -> i64 {
     ((raw << sh) as i64) >> sh
 }
 
-fn fnv1a(parts: &[&str]) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for p in parts {
-        for b in p.bytes().chain([0u8]) {
-            h ^= b as u64;
-            h = h.wrapping_mul(0x0100_0000_01b3);
-        }
-    }
-    h
-}
-
 /// Write the emitted Verilog and the waivers into `dir` for a tool to read.
 pub fn stage(dir: &Path, verilog: &str) -> std::io::Result<(PathBuf, PathBuf)> {
-    std::fs::create_dir_all(dir)?;
-    let v = dir.join("encspeed_core.v");
-    let w = dir.join("waivers.vlt");
-    std::fs::write(&v, verilog)?;
-    std::fs::write(&w, WAIVERS)?;
-    Ok((v, w))
+    let paths = stream_harness::stage(
+        dir,
+        &[("encspeed_core.v", verilog), ("waivers.vlt", WAIVERS)],
+    )?;
+    Ok((paths[0].clone(), paths[1].clone()))
 }
 
 /// `verilator --lint-only -Wall` with the documented waivers; Ok on a clean lint.
 pub fn lint(verilog: &str) -> Result<String, String> {
     let dir = crate::target_dir()
         .join("verilator")
-        .join(format!("lint-{:016x}", fnv1a(&[verilog])));
+        .join(format!("lint-{:016x}", stream_harness::fnv1a(&[verilog])));
     let (v, w) = stage(&dir, verilog).map_err(|e| e.to_string())?;
     crate::run_tool(
         Command::new("verilator")
@@ -82,37 +70,15 @@ impl Verilated {
     /// Compile `verilog` (top module `encspeed_core`) with the harness, or reuse the build.
     pub fn build(verilog: &str) -> Result<Verilated, String> {
         let speed_bits = speed_bits_of(verilog)?;
-        let hash = fnv1a(&[verilog, HARNESS, WAIVERS]);
-        let root = crate::target_dir().join("verilator");
-        let done = root.join(format!("{hash:016x}"));
-        let exe = done.join("obj/Vencspeed_core");
-        if exe.exists() {
-            return Ok(Verilated { exe, speed_bits });
-        }
-        // Build in a directory private to this process and this call (tests run in
-        // parallel threads of one process) and rename it into place, so that no test ever
-        // sees, or writes into, a half-built harness.
-        static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-        let build = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        let tmp = root.join(format!("{hash:016x}.tmp{}-{build}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&tmp);
-        let (v, w) = stage(&tmp, verilog).map_err(|e| e.to_string())?;
-        let h = tmp.join("harness.cpp");
-        std::fs::write(&h, HARNESS).map_err(|e| e.to_string())?;
-        crate::run_tool(
-            Command::new("verilator")
-                .current_dir(&tmp)
-                .args(["--cc", "--exe", "--build", "-O3", "--trace", "-j", "2"])
-                .args(["--top-module", "encspeed_core", "-Mdir", "obj"])
-                .arg(&w)
-                .arg(&v)
-                .arg(&h),
-            "verilator --build",
+        let exe = stream_harness::build_cached(
+            "",
+            "encspeed_core",
+            &[
+                ("waivers.vlt", WAIVERS),
+                ("encspeed_core.v", verilog),
+                ("harness.cpp", HARNESS),
+            ],
         )?;
-        if std::fs::rename(&tmp, &done).is_err() {
-            // Another process won the race; its build is identical.
-            let _ = std::fs::remove_dir_all(&tmp);
-        }
         Ok(Verilated { exe, speed_bits })
     }
 
@@ -128,17 +94,6 @@ impl Verilated {
         inputs: &[CoreInputs],
         vcd: Option<&Path>,
     ) -> Result<Vec<CoreOutputs>, String> {
-        let mut cmd = Command::new(&self.exe);
-        if let Some(path) = vcd {
-            cmd.arg("--vcd").arg(path);
-        }
-        let mut child = cmd
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| format!("cannot start {}: {e}", self.exe.display()))?;
-        let mut stdin = child.stdin.take().expect("piped stdin");
         let text: String = inputs
             .iter()
             .map(|i| {
@@ -157,21 +112,9 @@ impl Verilated {
                 )
             })
             .collect();
-        let writer = std::thread::spawn(move || stdin.write_all(text.as_bytes()));
-        let stdout = BufReader::new(child.stdout.take().expect("piped stdout"));
+        let rows = stream_harness::stream(&self.exe, text, vcd, 24)?;
         let mut outs = Vec::with_capacity(inputs.len());
-        for line in stdout.lines() {
-            let line = line.map_err(|e| e.to_string())?;
-            let f: Vec<u64> = line
-                .split_whitespace()
-                .map(|x| {
-                    x.parse::<u64>()
-                        .map_err(|e| format!("bad harness output {line:?}: {e}"))
-                })
-                .collect::<Result<_, _>>()?;
-            if f.len() != 24 {
-                return Err(format!("bad harness output {line:?}"));
-            }
+        for f in rows {
             let sp = |raw: u64| signed(raw, self.speed_bits);
             outs.push(CoreOutputs {
                 position: f[0],
@@ -199,18 +142,6 @@ impl Verilated {
                 illegal_count: f[22],
                 rev_error_count: f[23],
             });
-        }
-        writer
-            .join()
-            .expect("writer thread")
-            .map_err(|e| format!("writing to the harness: {e}"))?;
-        let out = child.wait_with_output().map_err(|e| e.to_string())?;
-        if !out.status.success() {
-            return Err(format!(
-                "harness failed ({}): {}",
-                out.status,
-                String::from_utf8_lossy(&out.stderr)
-            ));
         }
         Ok(outs)
     }

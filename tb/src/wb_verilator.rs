@@ -4,10 +4,10 @@
 //! directory per call and renamed into place, inputs and outputs streamed one line per
 //! cycle). A missing `verilator` is an error, never a skip: `.ci/run` installs it.
 
+use crate::stream_harness;
 use golden::wb_top::{WbTopInputs, WbTopOutputs, TOP_MODULE};
-use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 const HARNESS: &str = include_str!("../verilator/wb_harness.cpp");
 /// The top's own lint waivers (each one explained in the file).
@@ -24,33 +24,20 @@ pub fn waivers() -> String {
     )
 }
 
-fn fnv1a(parts: &[&str]) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for p in parts {
-        for b in p.bytes().chain([0u8]) {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x0100_0000_01b3);
-        }
-    }
-    h
-}
-
 /// Write the emitted Verilog and the waivers into `dir` for a tool to read.
 pub fn stage(dir: &Path, verilog: &str) -> std::io::Result<(PathBuf, PathBuf)> {
-    std::fs::create_dir_all(dir)?;
-    let v = dir.join(format!("{TOP_MODULE}.v"));
-    let w = dir.join("wb_waivers.vlt");
-    std::fs::write(&v, verilog)?;
-    std::fs::write(&w, waivers())?;
-    Ok((v, w))
+    let v = format!("{TOP_MODULE}.v");
+    let paths = stream_harness::stage(dir, &[(&v, verilog), ("wb_waivers.vlt", &waivers())])?;
+    Ok((paths[0].clone(), paths[1].clone()))
 }
 
 /// `verilator --lint-only -Wall` on `encspeed_wb.v` with the documented waivers; Ok on a
 /// clean lint (a warning fails the run).
 pub fn lint(verilog: &str) -> Result<String, String> {
-    let dir = crate::target_dir()
-        .join("verilator")
-        .join(format!("wb-lint-{:016x}", fnv1a(&[verilog, &waivers()])));
+    let dir = crate::target_dir().join("verilator").join(format!(
+        "wb-lint-{:016x}",
+        stream_harness::fnv1a(&[verilog, &waivers()])
+    ));
     let (v, w) = stage(&dir, verilog).map_err(|e| e.to_string())?;
     crate::run_tool(
         Command::new("verilator")
@@ -72,36 +59,16 @@ impl VerilatedWb {
         if !verilog.contains(&format!("module {TOP_MODULE}(")) {
             return Err(format!("the Verilog has no module {TOP_MODULE}"));
         }
-        let waivers = waivers();
-        let hash = fnv1a(&[verilog, HARNESS, &waivers]);
-        let root = crate::target_dir().join("verilator");
-        let done = root.join(format!("wb-{hash:016x}"));
-        let exe = done.join(format!("obj/V{TOP_MODULE}"));
-        if exe.exists() {
-            return Ok(VerilatedWb { exe });
-        }
-        // Private build directory per process and call, renamed into place when complete.
-        static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-        let build = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        let tmp = root.join(format!("wb-{hash:016x}.tmp{}-{build}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&tmp);
-        let (v, w) = stage(&tmp, verilog).map_err(|e| e.to_string())?;
-        let h = tmp.join("wb_harness.cpp");
-        std::fs::write(&h, HARNESS).map_err(|e| e.to_string())?;
-        crate::run_tool(
-            Command::new("verilator")
-                .current_dir(&tmp)
-                .args(["--cc", "--exe", "--build", "-O3", "--trace", "-j", "2"])
-                .args(["--top-module", TOP_MODULE, "-Mdir", "obj"])
-                .arg(&w)
-                .arg(&v)
-                .arg(&h),
-            "verilator --build",
+        let v = format!("{TOP_MODULE}.v");
+        let exe = stream_harness::build_cached(
+            "wb-",
+            TOP_MODULE,
+            &[
+                ("wb_waivers.vlt", &waivers()),
+                (&v, verilog),
+                ("wb_harness.cpp", HARNESS),
+            ],
         )?;
-        if std::fs::rename(&tmp, &done).is_err() {
-            // Another process won the race; its build is identical.
-            let _ = std::fs::remove_dir_all(&tmp);
-        }
         Ok(VerilatedWb { exe })
     }
 
@@ -117,17 +84,6 @@ impl VerilatedWb {
         inputs: &[WbTopInputs],
         vcd: Option<&Path>,
     ) -> Result<Vec<WbTopOutputs>, String> {
-        let mut cmd = Command::new(&self.exe);
-        if let Some(path) = vcd {
-            cmd.arg("--vcd").arg(path);
-        }
-        let mut child = cmd
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| format!("cannot start {}: {e}", self.exe.display()))?;
-        let mut stdin = child.stdin.take().expect("piped stdin");
         let text: String = inputs
             .iter()
             .map(|i| {
@@ -147,38 +103,17 @@ impl VerilatedWb {
                 )
             })
             .collect();
-        let writer = std::thread::spawn(move || stdin.write_all(text.as_bytes()));
-        let stdout = BufReader::new(child.stdout.take().expect("piped stdout"));
+        let rows = stream_harness::stream(&self.exe, text, vcd, 3)?;
         let mut outs = Vec::with_capacity(inputs.len());
-        for line in stdout.lines() {
-            let line = line.map_err(|e| e.to_string())?;
-            let f: Vec<u64> = line
-                .split_whitespace()
-                .map(|x| {
-                    x.parse::<u64>()
-                        .map_err(|e| format!("bad harness output {line:?}: {e}"))
-                })
-                .collect::<Result<_, _>>()?;
-            if f.len() != 3 || f[1] > u64::from(u32::MAX) {
-                return Err(format!("bad harness output {line:?}"));
+        for f in rows {
+            if f[1] > u64::from(u32::MAX) {
+                return Err(format!("bad harness output: wb_dat_o = {}", f[1]));
             }
             outs.push(WbTopOutputs {
                 wb_ack_o: f[0] != 0,
                 wb_dat_o: f[1] as u32,
                 irq: f[2] != 0,
             });
-        }
-        writer
-            .join()
-            .expect("writer thread")
-            .map_err(|e| format!("writing to the harness: {e}"))?;
-        let out = child.wait_with_output().map_err(|e| e.to_string())?;
-        if !out.status.success() {
-            return Err(format!(
-                "harness failed ({}): {}",
-                out.status,
-                String::from_utf8_lossy(&out.stderr)
-            ));
         }
         Ok(outs)
     }

@@ -1,11 +1,15 @@
-//! n3's frequency response measured on the emitted Verilog in Verilator: the same
-//! per-cycle inputs as the bit-true measurement give the same outputs on every cycle, and
-//! therefore exactly the same gain and phase. Also the Bode figure writer.
+//! The frequency response of n3 and of the hardware PC, ET and M/T measured on the
+//! emitted Verilog in Verilator: the same per-cycle inputs as the bit-true measurement
+//! give the same outputs on every cycle, and therefore exactly the same gain and phase.
+//! Also the Bode figure writer.
 //!
-//! One core configuration for all cases (500 lines, 1 MHz clock, dt = T_s = 1 ms), so that
-//! Verilator compiles once: r = 30 pulses per dt at 3600 r/min and r = 1/12 at 10 r/min.
+//! n3: one core configuration for all cases (500 lines, 1 MHz clock, dt = T_s = 1 ms), so
+//! that Verilator compiles once: r = 30 pulses per dt at 3600 r/min and r = 1/12 at
+//! 10 r/min. PC, ET, M/T: one configuration too (125 lines x4, 1 MHz, dt = T_s = 1 ms,
+//! 3600 r/min: 30 transitions per T_s, the paper's Figs. 8 and 10).
 
 use golden::freqresp::{BodeSpec, Estimator, Experiment};
+use std::f64::consts::PI;
 use tb::freqresp::{draw_svg, measure_on_verilog, verilated_for, BodeFigure};
 
 fn n3(rpm: f64, detune: f64) -> Experiment {
@@ -41,6 +45,55 @@ fn n3_on_the_emitted_verilog_equals_the_bit_true_measurement() {
                 exp.spec().rpm
             );
         }
+    }
+}
+
+#[test]
+fn hardware_pc_et_mt_on_the_emitted_verilog_equal_the_bit_true_measurement() {
+    // speed_pc, speed_et, speed_mt read at baseline_strobe, x4 (cfg_mode = 2), against the
+    // paper's models delayed by the hardware latency, within the 2°. A window of
+    // 1000 samples (10⁶ cycles) keeps the co-simulation short; the count and period
+    // quantisation noise, which does not grow with ñ, is kept small against the signal
+    // with ñ = 10 % (PC, ET and M/T are linear in expectation at any depth).
+    let hw = |est| {
+        Experiment::new(BodeSpec {
+            clock_hz: 1e6,
+            amplitude: 0.1,
+            min_samples: 1000,
+            ..BodeSpec::hardware(est, 125, 3600.0, 1e-3)
+        })
+        .expect("valid hardware experiment")
+    };
+    let cases = [
+        (hw(Estimator::Pc), 250.0),
+        (hw(Estimator::Et), 100.0),
+        (hw(Estimator::Mt), 250.0),
+    ];
+    assert_eq!(cases[0].0.cfg_mode(), 2);
+    let sim = verilated_for(&cases[0].0).expect("verilator builds the emitted core");
+    for (exp, f) in &cases {
+        // One configuration: the same Verilog serves all three.
+        assert_eq!(exp.core_params(), cases[0].0.core_params());
+        let hw = measure_on_verilog(exp, &sim, *f).expect("Verilator = golden on every cycle");
+        assert_eq!(
+            hw,
+            exp.measure(*f).unwrap(),
+            "{} {f} Hz",
+            exp.spec().estimator
+        );
+        assert!(
+            hw.phase_error_deg().abs() < 2.0 && hw.gain_error_db().abs() < 0.25,
+            "{} {f} Hz: {hw:?}",
+            exp.spec().estimator
+        );
+        // The latency is in the measurement: about 69 µs, 6° at 250 Hz.
+        let d = exp.hardware_latency_cycles().unwrap() as f64 * 1e-6;
+        let h_without =
+            hw.h * golden::smallsignal::Complex64::from_polar(1.0, 2.0 * PI * hw.f_hz * d);
+        let paper = exp.comparison_models()[0].at(hw.f_hz);
+        let err =
+            (h_without.arg().to_degrees() - paper.phase_deg + 180.0).rem_euclid(360.0) - 180.0;
+        assert!(err.abs() < 2.0, "{} {f} Hz: {err}", exp.spec().estimator);
     }
 }
 

@@ -142,6 +142,18 @@ impl Correction {
         self.scale * ((m_b - m_a) as f64 - wobble)
     }
 
+    /// Σₖ Eₖ·(Sₖ(x_b) − Sₖ(x_a)) (lines) between fractional positions x_a and x_b (lines),
+    /// Sₖ(x) = sin(2πk·x/K + pₖ): the part of a span's count that is eccentricity, for spans
+    /// whose ends are not lines (e.g. half a line past a pulse, [`super::n3`]).
+    pub fn wobble(&self, x_a: f64, x_b: f64) -> f64 {
+        let k = f64::from(self.lines);
+        let s = |t: &Term, x: f64| (TAU * f64::from(t.order) * x.rem_euclid(k) / k + t.phase).sin();
+        self.terms
+            .iter()
+            .map(|t| t.amplitude * (s(t, x_b) - s(t, x_a)))
+            .sum()
+    }
+
     /// Corrected shaft angle (rad) between lines m_a and m_b: 2π·N_c/K.
     pub fn angle(&self, m_a: i64, m_b: i64) -> f64 {
         TAU * self.count(m_a, m_b) / f64::from(self.lines)

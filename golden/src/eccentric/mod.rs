@@ -42,6 +42,7 @@
 pub mod correct;
 pub mod identify;
 pub mod motion;
+pub mod n3;
 pub mod paper;
 
 use serde::{Deserialize, Serialize};
