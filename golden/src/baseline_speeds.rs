@@ -69,6 +69,7 @@
 //! after the start. `reset` (synchronous, active high) wins over `start`: outputs 0, `valid`
 //! and `busy` 0, any computation or request abandoned.
 
+use crate::latest_request::LatestRequest;
 use crate::speed_calc::SpeedFormat;
 use std::fmt;
 
@@ -431,22 +432,13 @@ pub struct BaselineSpeedsOutputs {
     pub speeds: BaselineValues,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Job {
-    /// Edges until (and including) the edge that publishes.
-    remaining: u32,
-    result: BaselineValues,
-}
-
 /// Cycle-by-cycle model of `hdl::BaselineSpeeds`: the request register and the fixed
 /// schedule, with the results computed exactly by [`baseline_speeds`] (u128 arithmetic,
 /// not the hardware algorithm), so a match with the hardware proves its datapath exact.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct BaselineSpeedsModel {
     format: BaselineFormat,
-    pending: bool,
-    request: BaselineRequest,
-    job: Option<Job>,
+    timing: LatestRequest<BaselineRequest, BaselineValues>,
     out: BaselineSpeedsOutputs,
 }
 
@@ -455,9 +447,7 @@ impl BaselineSpeedsModel {
     pub fn new(format: BaselineFormat) -> BaselineSpeedsModel {
         BaselineSpeedsModel {
             format,
-            pending: false,
-            request: BaselineRequest::default(),
-            job: None,
+            timing: LatestRequest::new(),
             out: BaselineSpeedsOutputs::default(),
         }
     }
@@ -481,30 +471,21 @@ impl BaselineSpeedsModel {
             valid: false,
             ..self.out
         };
-        if let Some(job) = &mut self.job {
-            job.remaining -= 1;
-            if job.remaining == 0 {
-                out.speeds = job.result;
-                out.valid = true;
-                self.job = None;
-            }
-        } else if self.pending {
-            self.job = Some(Job {
-                remaining: self.format.latency_cycles() - 1,
-                result: baseline_speeds(self.format, &self.request),
-            });
-            self.pending = false;
-        }
-        if inp.start {
-            self.request = inp.req;
-            self.pending = true;
+        let format = self.format;
+        let start = inp.start.then_some(inp.req);
+        if let Some(result) = self
+            .timing
+            .edge(start, inp.reset, format.latency_cycles(), |r| {
+                baseline_speeds(format, &r)
+            })
+        {
+            out.speeds = result;
+            out.valid = true;
         }
         if inp.reset {
-            self.pending = false;
-            self.job = None;
             out = BaselineSpeedsOutputs::default();
         }
-        out.busy = self.pending || self.job.is_some();
+        out.busy = self.timing.busy();
         self.out = out;
         out
     }

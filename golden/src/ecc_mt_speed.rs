@@ -79,6 +79,7 @@
 use crate::baseline_speeds::BaselineFormat;
 pub use crate::baseline_speeds::{effective_dt, effective_shift};
 use crate::ecc_delta::{DELTA_BITS, DELTA_FRAC_BITS};
+use crate::latest_request::LatestRequest;
 
 /// Width C of the corrected count c = m·2^g − D for N-bit m and a d-bit δ with g fractional
 /// bits: the bit length of its largest value (2^N − 1)·2^g + 2^(d−1).
@@ -447,22 +448,13 @@ pub fn ecc_mt_speed(format: BaselineFormat, req: &EccMtRequest) -> i64 {
     )
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Job {
-    /// Edges until (and including) the edge that publishes.
-    remaining: u32,
-    result: i64,
-}
-
 /// Cycle-by-cycle model of `hdl::ecc_mt_speed::EccMtSpeed`: the request register and the
 /// fixed schedule, with the result computed by the exact rule [`speed_mtc`] (not the
 /// hardware algorithm), so a match with the hardware proves its datapath exact.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EccMtSpeedModel {
     format: BaselineFormat,
-    pending: bool,
-    request: EccMtRequest,
-    job: Option<Job>,
+    timing: LatestRequest<EccMtRequest, i64>,
     out: EccMtSpeedOutputs,
 }
 
@@ -471,9 +463,7 @@ impl EccMtSpeedModel {
     pub fn new(format: BaselineFormat) -> EccMtSpeedModel {
         EccMtSpeedModel {
             format,
-            pending: false,
-            request: EccMtRequest::default(),
-            job: None,
+            timing: LatestRequest::new(),
             out: EccMtSpeedOutputs::default(),
         }
     }
@@ -502,30 +492,19 @@ impl EccMtSpeedModel {
             valid: false,
             ..self.out
         };
-        if let Some(job) = &mut self.job {
-            job.remaining -= 1;
-            if job.remaining == 0 {
-                out.speed_mtc = job.result;
-                out.valid = true;
-                self.job = None;
-            }
-        } else if self.pending {
-            self.job = Some(Job {
-                remaining: self.latency_cycles() - 1,
-                result: ecc_mt_speed(self.format, &self.request),
-            });
-            self.pending = false;
-        }
-        if inp.start {
-            self.request = inp.req;
-            self.pending = true;
+        let (format, latency) = (self.format, self.latency_cycles());
+        let start = inp.start.then_some(inp.req);
+        if let Some(result) = self
+            .timing
+            .edge(start, inp.reset, latency, |r| ecc_mt_speed(format, &r))
+        {
+            out.speed_mtc = result;
+            out.valid = true;
         }
         if inp.reset {
-            self.pending = false;
-            self.job = None;
             out = EccMtSpeedOutputs::default();
         }
-        out.busy = self.pending || self.job.is_some();
+        out.busy = self.timing.busy();
         self.out = out;
         out
     }

@@ -43,6 +43,7 @@
 //! the latency is the same in every case.
 
 use crate::ecc_delta::{DELTA_BITS, DELTA_FRAC_BITS};
+use crate::latest_request::LatestRequest;
 
 /// Steps of the shift-add multiply (bits of f ≤ 2^17).
 pub const MUL_STEPS: u32 = 18;
@@ -157,8 +158,7 @@ pub struct EccN3Outputs {
 #[derive(Clone, Debug)]
 pub struct EccN3 {
     speed_bits: u32,
-    request: Option<EccN3Inputs>,
-    job: Option<(u32, i64)>,
+    timing: LatestRequest<EccN3Inputs, i64>,
     out: EccN3Outputs,
 }
 
@@ -171,8 +171,7 @@ impl EccN3 {
         );
         Self {
             speed_bits,
-            request: None,
-            job: None,
+            timing: LatestRequest::new(),
             out: EccN3Outputs::default(),
         }
     }
@@ -191,28 +190,19 @@ impl EccN3 {
             valid: false,
             ..self.out
         };
-        if let Some((remaining, result)) = &mut self.job {
-            *remaining -= 1;
-            if *remaining == 0 {
-                out.n3c = *result;
-                out.valid = true;
-                self.job = None;
-            }
-        } else if let Some(r) = self.request.take() {
+        let start = inp.start.then_some(inp);
+        if let Some(result) = self.timing.edge(start, inp.reset, LATENCY_CYCLES, |r| {
             // The most negative S-bit value has no magnitude in S − 1 bits: it saturates.
             let n3 = r.n3.max(-((1 << (s - 1)) - 1));
-            let result = corrected(n3, r.delta, r.nep_is_one, r.ndt_is_one, s);
-            self.job = Some((LATENCY_CYCLES - 1, result));
-        }
-        if inp.start {
-            self.request = Some(inp);
+            corrected(n3, r.delta, r.nep_is_one, r.ndt_is_one, s)
+        }) {
+            out.n3c = result;
+            out.valid = true;
         }
         if inp.reset {
-            self.request = None;
-            self.job = None;
             out = EccN3Outputs::default();
         }
-        out.busy = self.request.is_some() || self.job.is_some();
+        out.busy = self.timing.busy();
         self.out = out;
         out
     }

@@ -25,6 +25,7 @@ pub mod freqresp;
 pub mod frontend;
 pub mod ideal;
 pub mod ident_gatherer;
+pub mod latest_request;
 pub mod mt;
 pub mod mt_counter;
 pub mod params;

@@ -66,6 +66,7 @@
 //! before it begins (it is never computed from mixed inputs, and the newest is always
 //! computed). Both the bound and its tightness are tested.
 
+use crate::latest_request::LatestRequest;
 use std::fmt;
 
 /// Narrowest counter width N (bits), as [`crate::params::MIN_COUNTER_BITS`].
@@ -362,22 +363,13 @@ pub struct SpeedCalcOutputs {
     pub speeds: Speeds,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Job {
-    /// Edges until (and including) the edge that publishes.
-    remaining: u32,
-    result: Speeds,
-}
-
 /// Cycle-by-cycle model of `hdl::SpeedCalc`: the request register and the fixed schedule,
 /// with the results computed exactly by [`speeds`] (so a match with the hardware proves its
 /// datapath exact, not merely equal to a copy of itself).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SpeedCalcModel {
     format: SpeedFormat,
-    pending: bool,
-    request: (u64, u64, bool),
-    job: Option<Job>,
+    timing: LatestRequest<(u64, u64, bool), Speeds>,
     out: SpeedCalcOutputs,
 }
 
@@ -386,9 +378,7 @@ impl SpeedCalcModel {
     pub fn new(format: SpeedFormat) -> SpeedCalcModel {
         SpeedCalcModel {
             format,
-            pending: false,
-            request: (0, 0, false),
-            job: None,
+            timing: LatestRequest::new(),
             out: SpeedCalcOutputs::default(),
         }
     }
@@ -416,31 +406,21 @@ impl SpeedCalcModel {
             valid: false,
             ..self.out
         };
-        if let Some(job) = &mut self.job {
-            job.remaining -= 1;
-            if job.remaining == 0 {
-                out.speeds = job.result;
-                out.valid = true;
-                self.job = None;
-            }
-        } else if self.pending {
-            let (nep, ndt, negative) = self.request;
-            self.job = Some(Job {
-                remaining: self.format.latency_cycles() - 1,
-                result: speeds(self.format, nep, ndt, negative),
-            });
-            self.pending = false;
-        }
-        if inp.start {
-            self.request = (inp.nep, inp.ndt, inp.negative);
-            self.pending = true;
+        let format = self.format;
+        let start = inp.start.then_some((inp.nep, inp.ndt, inp.negative));
+        if let Some(result) = self.timing.edge(
+            start,
+            inp.reset,
+            format.latency_cycles(),
+            |(nep, ndt, negative)| speeds(format, nep, ndt, negative),
+        ) {
+            out.speeds = result;
+            out.valid = true;
         }
         if inp.reset {
-            self.pending = false;
-            self.job = None;
             out = SpeedCalcOutputs::default();
         }
-        out.busy = self.pending || self.job.is_some();
+        out.busy = self.timing.busy();
         self.out = out;
         out
     }
