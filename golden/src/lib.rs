@@ -37,5 +37,6 @@ pub mod regmap;
 pub mod sine_rom;
 pub mod smallsignal;
 pub mod speed_calc;
+pub mod splitmix;
 pub mod wb_regs;
 pub mod wb_top;

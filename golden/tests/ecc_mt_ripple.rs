@@ -10,6 +10,7 @@
 use golden::baseline_speeds::{speed_mt, BaselineFormat};
 use golden::ecc_delta::{coefficients, delta_raw, Request};
 use golden::ecc_mt_speed::speed_mtc;
+use golden::eccentric::correct::{once_per_rev, ripple};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
 use golden::plant::Profile;
@@ -29,20 +30,20 @@ struct Ripple {
     budget_ratio: f64,
 }
 
-/// (shaft angle, v/r − 1, budget) → figures.
-fn ripple(v: &[(f64, f64, f64)]) -> Ripple {
-    let n = v.len() as f64;
-    let mean = v.iter().map(|x| x.1).sum::<f64>() / n;
-    let c = 2.0 / n * v.iter().map(|(a, e, _)| (e - mean) * a.cos()).sum::<f64>();
-    let s = 2.0 / n * v.iter().map(|(a, e, _)| (e - mean) * a.sin()).sum::<f64>();
-    let max = v.iter().map(|x| x.1).fold(f64::MIN, f64::max);
-    let min = v.iter().map(|x| x.1).fold(f64::MAX, f64::min);
+/// Figures of (shaft angle, speed, budget) samples against the true speed `r`.
+fn figures(v: &[(f64, f64, f64)], r: f64) -> Ripple {
+    let speeds: Vec<f64> = v.iter().map(|x| x.1).collect();
+    let rel: Vec<(f64, f64)> = v.iter().map(|x| (x.0, x.1 / r - 1.0)).collect();
+    let rp = ripple(&speeds, r);
     Ripple {
         estimates: v.len(),
-        peak: max.abs().max(min.abs()),
-        pp: max - min,
-        h1: c.hypot(s),
-        budget_ratio: v.iter().map(|(_, e, b)| e.abs() / b).fold(0.0, f64::max),
+        peak: rp.peak,
+        pp: rp.peak_to_peak,
+        h1: once_per_rev(&rel),
+        budget_ratio: v
+            .iter()
+            .map(|(_, s, b)| (s / r - 1.0).abs() / b)
+            .fold(0.0, f64::max),
     }
 }
 
@@ -97,8 +98,8 @@ fn run(rpm: f64, revs: f64) -> (Ripple, Ripple) {
                     let budget = 1.0 / t as f64 + half_lsb;
                     let v0 = speed_mt(format, m, t, DT, false, 0) as f64 / 65_536.0;
                     let v1 = speed_mtc(format, m, t, DT, delta, false, 0) as f64 / 65_536.0;
-                    before.push((angle, v0 / r - 1.0, budget));
-                    after.push((angle, v1 / r - 1.0, budget));
+                    before.push((angle, v0, budget));
+                    after.push((angle, v1, budget));
                 }
                 anchor = Some(last);
             }
@@ -106,7 +107,7 @@ fn run(rpm: f64, revs: f64) -> (Ripple, Ripple) {
             None => anchor = Some(last),
         }
     }
-    (ripple(&before), ripple(&after))
+    (figures(&before, r), figures(&after, r))
 }
 
 #[test]

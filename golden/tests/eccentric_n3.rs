@@ -5,7 +5,7 @@
 //! down to n3's quantisation, and the test asserts exactly that. Run with `--nocapture`
 //! for the figures docs/eccentricity-hardware.md quotes.
 
-use golden::eccentric::correct::Correction;
+use golden::eccentric::correct::{once_per_rev, ripple, Correction};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::n3::{n3_on_disc, N3Sample};
 use golden::eccentric::{Eccentricity, Model};
@@ -37,22 +37,16 @@ fn run(r: f64, e: f64) -> Vec<N3Sample> {
 /// (largest |v/r − 1| / er3_max(n1) over the samples, peak-to-peak of v/r, amplitude of
 /// the once-per-revolution harmonic of v/r − 1 against the shaft angle).
 fn figures(s: &[N3Sample], r: f64, v: impl Fn(&N3Sample) -> f64) -> (f64, f64, f64) {
+    let worst = s
+        .iter()
+        .map(|x| (v(x) / r - 1.0).abs() / er3_max(x.nep1 as f64 / x.ndt1 as f64))
+        .fold(0.0, f64::max);
+    let speeds: Vec<f64> = s.iter().map(&v).collect();
     let rel: Vec<(f64, f64)> = s
         .iter()
         .map(|x| (TAU * SPEED * x.t, v(x) / r - 1.0))
         .collect();
-    let worst = s
-        .iter()
-        .zip(&rel)
-        .map(|(x, (_, e))| e.abs() / er3_max(x.nep1 as f64 / x.ndt1 as f64))
-        .fold(0.0, f64::max);
-    let max = rel.iter().map(|x| x.1).fold(f64::MIN, f64::max);
-    let min = rel.iter().map(|x| x.1).fold(f64::MAX, f64::min);
-    let n = rel.len() as f64;
-    let mean = rel.iter().map(|x| x.1).sum::<f64>() / n;
-    let c = 2.0 / n * rel.iter().map(|(a, e)| (e - mean) * a.cos()).sum::<f64>();
-    let d = 2.0 / n * rel.iter().map(|(a, e)| (e - mean) * a.sin()).sum::<f64>();
-    (worst, max - min, c.hypot(d))
+    (worst, ripple(&speeds, r).peak_to_peak, once_per_rev(&rel))
 }
 
 const RATES: [f64; 6] = [0.047, 0.3, 0.9, 3.3, 33.0, 330.0];

@@ -253,3 +253,17 @@ pub fn ripple(speeds: &[f64], truth: f64) -> Ripple {
         mean: rel.iter().sum::<f64>() / rel.len() as f64,
     }
 }
+
+/// Amplitude of the once-per-revolution component of `samples` = (shaft angle (rad),
+/// value): 2/n·|Σ (v − v̄)·e^(−jθ)|, the single DFT bin at one cycle per revolution.
+/// Exact for samples spread evenly over whole revolutions, an estimate otherwise. Panics
+/// on an empty slice.
+pub fn once_per_rev(samples: &[(f64, f64)]) -> f64 {
+    assert!(!samples.is_empty(), "once_per_rev of no samples");
+    let n = samples.len() as f64;
+    let mean = samples.iter().map(|s| s.1).sum::<f64>() / n;
+    let (c, s) = samples.iter().fold((0.0, 0.0), |(c, s), &(a, v)| {
+        (c + (v - mean) * a.cos(), s + (v - mean) * a.sin())
+    });
+    2.0 / n * c.hypot(s)
+}

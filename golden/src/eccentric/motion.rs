@@ -12,6 +12,7 @@
 
 use super::{EccError, Eccentricity};
 use crate::plant::{Channel, Disc, Edge, Profile, Sample};
+use crate::splitmix::SplitMix64;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 
@@ -166,25 +167,6 @@ impl ShaftMotion for JitterMotion {
 
     fn breakpoints(&self) -> Vec<f64> {
         Vec::new()
-    }
-}
-
-/// SplitMix64 (Steele et al. 2014): a tiny reproducible generator, so the golden crate
-/// needs no random-number dependency.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1) with 53 random bits.
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
     }
 }
 
