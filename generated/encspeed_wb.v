@@ -78,6 +78,14 @@ module encspeed_wb(clock,reset,enc_a,enc_b,enc_z,wb_cyc_i,wb_stb_i,wb_we_i,wb_ad
     wire  [15:0] core$glitch_count;
     wire  [15:0] core$illegal_count;
     wire  [15:0] core$rev_error_count;
+    wire  [31:0] core$speed_position;
+    wire  [23:0] core$speed_nep;
+    wire  [23:0] core$speed_ndt;
+    wire  core$mt_strobe;
+    wire  [23:0] core$mt_m;
+    wire  [23:0] core$mt_t;
+    wire  core$mt_negative;
+    wire  [23:0] core$dt_active;
     reg  regs$clock;
     reg  regs$reset;
     reg  regs$wb_cyc_i;
@@ -156,7 +164,15 @@ module encspeed_wb(clock,reset,enc_a,enc_b,enc_z,wb_cyc_i,wb_stb_i,wb_we_i,wb_ad
         .cfg_error(core$cfg_error),
         .glitch_count(core$glitch_count),
         .illegal_count(core$illegal_count),
-        .rev_error_count(core$rev_error_count)
+        .rev_error_count(core$rev_error_count),
+        .speed_position(core$speed_position),
+        .speed_nep(core$speed_nep),
+        .speed_ndt(core$speed_ndt),
+        .mt_strobe(core$mt_strobe),
+        .mt_m(core$mt_m),
+        .mt_t(core$mt_t),
+        .mt_negative(core$mt_negative),
+        .dt_active(core$dt_active)
     );
     encspeed_wb$regs regs(
         .clock(regs$clock),
@@ -255,7 +271,7 @@ module encspeed_wb(clock,reset,enc_a,enc_b,enc_z,wb_cyc_i,wb_stb_i,wb_we_i,wb_ad
 endmodule // encspeed_wb
 
 
-module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);
+module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count,speed_position,speed_nep,speed_ndt,mt_strobe,mt_m,mt_t,mt_negative,dt_active);
     
     // Module arguments
     input wire  clock;
@@ -293,6 +309,14 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     output reg  [15:0] glitch_count;
     output reg  [15:0] illegal_count;
     output reg  [15:0] rev_error_count;
+    output reg  [31:0] speed_position;
+    output reg  [23:0] speed_nep;
+    output reg  [23:0] speed_ndt;
+    output reg  mt_strobe;
+    output reg  [23:0] mt_m;
+    output reg  [23:0] mt_t;
+    output reg  mt_negative;
+    output reg  [23:0] dt_active;
     
     // Constant declarations
     localparam  n_zero = 24'h0;
@@ -403,6 +427,25 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     wire  [40:0] calc$speed_n3;
     wire  calc$valid;
     wire  calc$busy;
+    reg  tag$clock;
+    reg  tag$reset;
+    reg  tag$start;
+    reg  [31:0] tag$position;
+    reg  [23:0] tag$nep;
+    reg  [23:0] tag$ndt;
+    wire  [31:0] tag$tag_position;
+    wire  [23:0] tag$tag_nep;
+    wire  [23:0] tag$tag_ndt;
+    wire  tag$valid;
+    reg  [31:0] tag_position$d;
+    wire  [31:0] tag_position$q;
+    reg  tag_position$clock;
+    reg  [23:0] tag_nep$d;
+    wire  [23:0] tag_nep$q;
+    reg  tag_nep$clock;
+    reg  [23:0] tag_ndt$d;
+    wire  [23:0] tag_ndt$q;
+    reg  tag_ndt$clock;
     reg  [40:0] scale_n1$value;
     reg  [1:0] scale_n1$shift;
     wire  [40:0] scale_n1$scaled;
@@ -627,6 +670,33 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         .valid(calc$valid),
         .busy(calc$busy)
     );
+    encspeed_wb$core$tag tag(
+        .clock(tag$clock),
+        .reset(tag$reset),
+        .start(tag$start),
+        .position(tag$position),
+        .nep(tag$nep),
+        .ndt(tag$ndt),
+        .tag_position(tag$tag_position),
+        .tag_nep(tag$tag_nep),
+        .tag_ndt(tag$tag_ndt),
+        .valid(tag$valid)
+    );
+    encspeed_wb$core$tag_position tag_position(
+        .d(tag_position$d),
+        .q(tag_position$q),
+        .clock(tag_position$clock)
+    );
+    encspeed_wb$core$tag_nep tag_nep(
+        .d(tag_nep$d),
+        .q(tag_nep$q),
+        .clock(tag_nep$clock)
+    );
+    encspeed_wb$core$tag_ndt tag_ndt(
+        .d(tag_ndt$d),
+        .q(tag_ndt$q),
+        .clock(tag_ndt$clock)
+    );
     encspeed_wb$core$scale_n1 scale_n1(
         .value(scale_n1$value),
         .shift(scale_n1$shift),
@@ -770,6 +840,7 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         timebase$clock = clock;
         table1$clock = clock;
         calc$clock = clock;
+        tag$clock = clock;
         hold$clock = clock;
         pc$clock = clock;
         et$clock = clock;
@@ -783,6 +854,9 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         timeout_reg$clock = clock;
         cfg_error_reg$clock = clock;
         mode_reg$clock = clock;
+        tag_position$clock = clock;
+        tag_nep$clock = clock;
+        tag_ndt$clock = clock;
         have_dir$d = have_dir$q;
         last_dir$d = last_dir$q;
         et_have$d = et_have$q;
@@ -790,6 +864,9 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         timeout_reg$d = timeout_reg$q;
         cfg_error_reg$d = cfg_error_reg$q;
         mode_reg$d = mode_reg$q;
+        tag_position$d = tag_position$q;
+        tag_nep$d = tag_nep$q;
+        tag_ndt$d = tag_ndt$q;
         mode_reg$d = cfg_mode;
         rst = reset | (cfg_mode != mode_reg$q);
         dt_eff = cfg_dt;
@@ -874,6 +951,21 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         scale_n1$shift = shift;
         scale_n2$shift = shift;
         scale_n3$shift = shift;
+        tag$reset = engine_reset;
+        tag$start = table1$update & table1$primed;
+        tag$position = counter$position;
+        tag$nep = table1$nep;
+        tag$ndt = table1$ndt;
+        if (tag$valid) begin
+            tag_position$d = tag$tag_position;
+            tag_nep$d = tag$tag_nep;
+            tag_ndt$d = tag$tag_ndt;
+        end
+        if (engine_reset) begin
+            tag_position$d = 32'h0;
+            tag_nep$d = n_zero;
+            tag_ndt$d = n_zero;
+        end
         hold$clear = engine_reset;
         hold$load = calc$valid;
         hold$n1_in = scale_n1$scaled;
@@ -933,6 +1025,14 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         glitch_count = faults$glitch_count;
         illegal_count = decoder$illegal_count;
         rev_error_count = counter$rev_error_count;
+        speed_position = tag_position$q;
+        speed_nep = tag_nep$q;
+        speed_ndt = tag_ndt$q;
+        mt_strobe = mt$strobe;
+        mt_m = mt$m;
+        mt_t = mt$t;
+        mt_negative = mt$negative;
+        dt_active = dt_reg$q;
     end
     
 endmodule // encspeed_wb$core
@@ -7337,6 +7437,503 @@ module encspeed_wb$core$table1$update_reg(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$table1$update_reg
+
+
+module encspeed_wb$core$tag(clock,reset,start,position,nep,ndt,tag_position,tag_nep,tag_ndt,valid);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  start;
+    input wire  [31:0] position;
+    input wire  [23:0] nep;
+    input wire  [23:0] ndt;
+    output reg  [31:0] tag_position;
+    output reg  [23:0] tag_nep;
+    output reg  [23:0] tag_ndt;
+    output reg  valid;
+    
+    // Constant declarations
+    localparam  first = 8'h7f;
+    localparam  one = 8'h1;
+    
+    // Stub signals
+    reg  [31:0] req_position$d;
+    wire  [31:0] req_position$q;
+    reg  req_position$clock;
+    reg  [23:0] req_nep$d;
+    wire  [23:0] req_nep$q;
+    reg  req_nep$clock;
+    reg  [23:0] req_ndt$d;
+    wire  [23:0] req_ndt$q;
+    reg  req_ndt$clock;
+    reg  pending$d;
+    wire  pending$q;
+    reg  pending$clock;
+    reg  [31:0] act_position$d;
+    wire  [31:0] act_position$q;
+    reg  act_position$clock;
+    reg  [23:0] act_nep$d;
+    wire  [23:0] act_nep$q;
+    reg  act_nep$clock;
+    reg  [23:0] act_ndt$d;
+    wire  [23:0] act_ndt$q;
+    reg  act_ndt$clock;
+    reg  running$d;
+    wire  running$q;
+    reg  running$clock;
+    reg  [7:0] remaining$d;
+    wire  [7:0] remaining$q;
+    reg  remaining$clock;
+    reg  [31:0] out_position$d;
+    wire  [31:0] out_position$q;
+    reg  out_position$clock;
+    reg  [23:0] out_nep$d;
+    wire  [23:0] out_nep$q;
+    reg  out_nep$clock;
+    reg  [23:0] out_ndt$d;
+    wire  [23:0] out_ndt$q;
+    reg  out_ndt$clock;
+    reg  out_valid$d;
+    wire  out_valid$q;
+    reg  out_valid$clock;
+    
+    // Sub module instances
+    encspeed_wb$core$tag$req_position req_position(
+        .d(req_position$d),
+        .q(req_position$q),
+        .clock(req_position$clock)
+    );
+    encspeed_wb$core$tag$req_nep req_nep(
+        .d(req_nep$d),
+        .q(req_nep$q),
+        .clock(req_nep$clock)
+    );
+    encspeed_wb$core$tag$req_ndt req_ndt(
+        .d(req_ndt$d),
+        .q(req_ndt$q),
+        .clock(req_ndt$clock)
+    );
+    encspeed_wb$core$tag$pending pending(
+        .d(pending$d),
+        .q(pending$q),
+        .clock(pending$clock)
+    );
+    encspeed_wb$core$tag$act_position act_position(
+        .d(act_position$d),
+        .q(act_position$q),
+        .clock(act_position$clock)
+    );
+    encspeed_wb$core$tag$act_nep act_nep(
+        .d(act_nep$d),
+        .q(act_nep$q),
+        .clock(act_nep$clock)
+    );
+    encspeed_wb$core$tag$act_ndt act_ndt(
+        .d(act_ndt$d),
+        .q(act_ndt$q),
+        .clock(act_ndt$clock)
+    );
+    encspeed_wb$core$tag$running running(
+        .d(running$d),
+        .q(running$q),
+        .clock(running$clock)
+    );
+    encspeed_wb$core$tag$remaining remaining(
+        .d(remaining$d),
+        .q(remaining$q),
+        .clock(remaining$clock)
+    );
+    encspeed_wb$core$tag$out_position out_position(
+        .d(out_position$d),
+        .q(out_position$q),
+        .clock(out_position$clock)
+    );
+    encspeed_wb$core$tag$out_nep out_nep(
+        .d(out_nep$d),
+        .q(out_nep$q),
+        .clock(out_nep$clock)
+    );
+    encspeed_wb$core$tag$out_ndt out_ndt(
+        .d(out_ndt$d),
+        .q(out_ndt$q),
+        .clock(out_ndt$clock)
+    );
+    encspeed_wb$core$tag$out_valid out_valid(
+        .d(out_valid$d),
+        .q(out_valid$q),
+        .clock(out_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        req_position$clock = clock;
+        req_nep$clock = clock;
+        req_ndt$clock = clock;
+        pending$clock = clock;
+        act_position$clock = clock;
+        act_nep$clock = clock;
+        act_ndt$clock = clock;
+        running$clock = clock;
+        remaining$clock = clock;
+        out_position$clock = clock;
+        out_nep$clock = clock;
+        out_ndt$clock = clock;
+        out_valid$clock = clock;
+        req_position$d = req_position$q;
+        req_nep$d = req_nep$q;
+        req_ndt$d = req_ndt$q;
+        pending$d = pending$q;
+        act_position$d = act_position$q;
+        act_nep$d = act_nep$q;
+        act_ndt$d = act_ndt$q;
+        running$d = running$q;
+        remaining$d = remaining$q;
+        out_position$d = out_position$q;
+        out_nep$d = out_nep$q;
+        out_ndt$d = out_ndt$q;
+        out_valid$d = out_valid$q;
+        out_valid$d = 1'b0;
+        if (running$q) begin
+            remaining$d = remaining$q - one;
+            if (remaining$q == one) begin
+                running$d = 1'b0;
+                out_position$d = act_position$q;
+                out_nep$d = act_nep$q;
+                out_ndt$d = act_ndt$q;
+                out_valid$d = 1'b1;
+            end
+        end
+        else if (pending$q) begin
+            act_position$d = req_position$q;
+            act_nep$d = req_nep$q;
+            act_ndt$d = req_ndt$q;
+            pending$d = 1'b0;
+            running$d = 1'b1;
+            remaining$d = first;
+        end
+        if (start) begin
+            req_position$d = position;
+            req_nep$d = nep;
+            req_ndt$d = ndt;
+            pending$d = 1'b1;
+        end
+        if (reset) begin
+            pending$d = 1'b0;
+            running$d = 1'b0;
+            out_valid$d = 1'b0;
+        end
+        tag_position = out_position$q;
+        tag_nep = out_nep$q;
+        tag_ndt = out_ndt$q;
+        valid = out_valid$q;
+    end
+    
+endmodule // encspeed_wb$core$tag
+
+
+module encspeed_wb$core$tag$act_ndt(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$act_ndt
+
+
+module encspeed_wb$core$tag$act_nep(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$act_nep
+
+
+module encspeed_wb$core$tag$act_position(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$act_position
+
+
+module encspeed_wb$core$tag$out_ndt(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$out_ndt
+
+
+module encspeed_wb$core$tag$out_nep(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$out_nep
+
+
+module encspeed_wb$core$tag$out_position(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$out_position
+
+
+module encspeed_wb$core$tag$out_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$out_valid
+
+
+module encspeed_wb$core$tag$pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$pending
+
+
+module encspeed_wb$core$tag$remaining(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$remaining
+
+
+module encspeed_wb$core$tag$req_ndt(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$req_ndt
+
+
+module encspeed_wb$core$tag$req_nep(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$req_nep
+
+
+module encspeed_wb$core$tag$req_position(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$req_position
+
+
+module encspeed_wb$core$tag$running(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag$running
+
+
+module encspeed_wb$core$tag_ndt(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag_ndt
+
+
+module encspeed_wb$core$tag_nep(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag_nep
+
+
+module encspeed_wb$core$tag_position(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$tag_position
 
 
 module encspeed_wb$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,stalled);

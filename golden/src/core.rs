@@ -64,12 +64,13 @@ use crate::frontend::{
     CounterInputs, DecoderInputs, GlitchFilter, GlitchFilterInputs, PositionCounter,
     QuadratureDecoder, MODE_INVALID, MODE_X1, MODE_X2,
 };
+use crate::latest_request::LatestRequest;
 use crate::mt_counter::{MtCounter, MtInputs};
 use crate::params::{
     max_value, Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
 };
 use crate::pc_counter::{PcCounter, PcInputs};
-use crate::speed_calc::{SpeedCalcInputs, SpeedCalcModel, SpeedFormat, Speeds};
+use crate::speed_calc::{self, SpeedCalcInputs, SpeedCalcModel, SpeedFormat, Speeds};
 
 /// Edges after reset before the synchronisers hold real samples.
 pub const SYNC_CYCLES: u64 = 2;
@@ -152,6 +153,35 @@ pub struct CoreOutputs {
     pub illegal_count: u64,
     /// Revolutions with the wrong count (saturating).
     pub rev_error_count: u64,
+    /// With `speed_strobe` (held until the next): `position` in the cycle of the `update`
+    /// whose Nep1/Ndt1 the speeds were computed from (the span end of an eccentricity
+    /// correction, `golden::ecc_top`).
+    pub speed_position: u64,
+    /// With `speed_strobe`: the Nep1 the speeds were computed from.
+    pub speed_nep: u64,
+    /// With `speed_strobe`: the Ndt1 the speeds were computed from.
+    pub speed_ndt: u64,
+    /// One cycle: the M/T counter closed a window (`mt_m`, `mt_t`, `mt_negative` just
+    /// written; `position` in this cycle is the position of the window's last step).
+    pub mt_strobe: bool,
+    /// M/T steps of the last window.
+    pub mt_m: u64,
+    /// M/T cycles spanning them (`golden::mt_counter`).
+    pub mt_t: u64,
+    /// The last window's steps were backward.
+    pub mt_negative: bool,
+    /// The dt in use, clock cycles (cfg_dt after its default and minimum, registered).
+    pub dt_active: u64,
+}
+
+/// What the speed calculator's request carries beside Nep1 and Ndt1, delayed as the
+/// calculator delays its result ([`LatestRequest`] with the same latency and the same
+/// starts and resets, so the two publish at the same edges).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct SpeedTag {
+    position: u64,
+    nep: u64,
+    ndt: u64,
 }
 
 /// log2 of the steps per line for `cfg_mode` (x1: 0, x2: 1, x4 and 3: 2).
@@ -208,6 +238,10 @@ pub struct CoreModel {
     engine: Table1,
     primed: bool,
     calc: SpeedCalcModel,
+    calc_latency: u32,
+    tag: LatestRequest<SpeedTag, SpeedTag>,
+    tag_out: SpeedTag,
+    speed_tag: SpeedTag,
     speeds: Speeds,
     speed_strobe: bool,
     speed_ok: bool,
@@ -249,6 +283,10 @@ impl CoreModel {
             engine: Table1::new(p),
             primed: false,
             calc: SpeedCalcModel::new(format),
+            calc_latency: speed_calc::latency_cycles(p.counter_bits(), SPEED_FRAC_BITS),
+            tag: LatestRequest::new(),
+            tag_out: SpeedTag::default(),
+            speed_tag: SpeedTag::default(),
             speeds: Speeds::default(),
             speed_strobe: false,
             speed_ok: false,
@@ -351,15 +389,29 @@ impl CoreModel {
             self.engine.step(dec.step, self.dt_reg);
         }
         self.primed = !engine_reset && (self.primed || restart);
+        let calc_start = t1.update && primed_before;
         self.calc.step(SpeedCalcInputs {
             reset: engine_reset,
-            start: t1.update && primed_before,
+            start: calc_start,
             nep: t1.nep,
             ndt: t1.ndt,
             negative: !self.last_dir,
         });
+        let tag_before = self.tag_out;
+        let request = calc_start.then_some(SpeedTag {
+            position: pos.position,
+            nep: t1.nep,
+            ndt: t1.ndt,
+        });
+        if let Some(t) = self
+            .tag
+            .edge(request, engine_reset, self.calc_latency, |t| t)
+        {
+            self.tag_out = t;
+        }
         if engine_reset {
             self.speeds = Speeds::default();
+            self.speed_tag = SpeedTag::default();
             self.speed_strobe = false;
             self.speed_ok = false;
         } else {
@@ -370,6 +422,7 @@ impl CoreModel {
                     n2: mode_scale(calc.speeds.n2, shift),
                     n3: mode_scale(calc.speeds.n3, shift),
                 };
+                self.speed_tag = tag_before;
                 self.speed_ok = true;
             }
         }
@@ -482,6 +535,14 @@ impl CoreModel {
             glitch_count: self.glitch_count,
             illegal_count: dec.illegal_count,
             rev_error_count: pos.rev_error_count,
+            speed_position: self.speed_tag.position,
+            speed_nep: self.speed_tag.nep,
+            speed_ndt: self.speed_tag.ndt,
+            mt_strobe: self.mt.outputs().strobe,
+            mt_m: self.mt.outputs().m,
+            mt_t: self.mt.outputs().t,
+            mt_negative: self.mt.outputs().negative,
+            dt_active: self.dt_reg,
         }
     }
 }

@@ -68,6 +68,14 @@ pub fn core_ports(p: &Params) -> Vec<Port> {
         o("glitch_count", g, "pulses rejected by the A, B and Z filters since reset, saturating"),
         o("illegal_count", g, "illegal transitions since reset, saturating"),
         o("rev_error_count", g, "revolutions with a wrong count since reset, saturating"),
+        o("speed_position", POSITION_BITS, "with speed_strobe, held: position in the cycle of the update whose nep/ndt the speeds were computed from (the span end for an eccentricity correction); 0 after reset or a reversal"),
+        o("speed_nep", n, "with speed_strobe, held: the nep the speeds were computed from"),
+        o("speed_ndt", n, "with speed_strobe, held: the ndt the speeds were computed from"),
+        o("mt_strobe", 1, "one cycle: the M/T counter closed a window; mt_m, mt_t, mt_negative were just written and position in this cycle is that of the window's last step; speed_mt follows at baseline_strobe"),
+        o("mt_m", n, "M/T: steps of the last window (0: none)"),
+        o("mt_t", n, "M/T: clock cycles from the step before the window's first to its last (mt_m > 0), else cycles since the last step"),
+        o("mt_negative", 1, "M/T: the last window's steps were backward"),
+        o("dt_active", n, "the dt in use, clock cycles: cfg_dt after its default and minimum, registered"),
     ]
 }
 

@@ -23,6 +23,7 @@ use crate::position_counter::PositionCounter;
 use crate::quadrature_decoder::QuadratureDecoder;
 use crate::speed_calc::SpeedCalc;
 use crate::speed_hold::SpeedHold;
+use crate::speed_tag::SpeedTag;
 use crate::startup::Startup;
 use crate::sync_estimator::SyncEstimator;
 use crate::timebase::Timebase;
@@ -111,6 +112,22 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     pub illegal_count: Signal<Out, Bits<G>>,
     /// Revolutions with the wrong count (saturating).
     pub rev_error_count: Signal<Out, Bits<G>>,
+    /// With `speed_strobe`: `position` at the update the speeds were computed from.
+    pub speed_position: Signal<Out, Bits<C>>,
+    /// With `speed_strobe`: the Nep1 the speeds were computed from.
+    pub speed_nep: Signal<Out, Bits<N>>,
+    /// With `speed_strobe`: the Ndt1 the speeds were computed from.
+    pub speed_ndt: Signal<Out, Bits<N>>,
+    /// One cycle: the M/T counter closed a window.
+    pub mt_strobe: Signal<Out, Bit>,
+    /// M/T steps of the last window.
+    pub mt_m: Signal<Out, Bits<N>>,
+    /// M/T cycles spanning them.
+    pub mt_t: Signal<Out, Bits<N>>,
+    /// The last M/T window's steps were backward.
+    pub mt_negative: Signal<Out, Bit>,
+    /// The dt in use (registered).
+    pub dt_active: Signal<Out, Bits<N>>,
     sync_a: TwoFlopSync,
     sync_b: TwoFlopSync,
     sync_z: TwoFlopSync,
@@ -123,6 +140,10 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     pub(crate) timebase: Timebase<N>,
     table1: SyncEstimator<N>,
     calc: SpeedCalc<N, F, P, S>,
+    tag: SpeedTag<N>,
+    tag_position: DFF<Bits<C>>,
+    tag_nep: DFF<Bits<N>>,
+    tag_ndt: DFF<Bits<N>>,
     scale_n1: ModeScale<S>,
     scale_n2: ModeScale<S>,
     scale_n3: ModeScale<S>,
@@ -207,6 +228,14 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             glitch_count: Default::default(),
             illegal_count: Default::default(),
             rev_error_count: Default::default(),
+            speed_position: Default::default(),
+            speed_nep: Default::default(),
+            speed_ndt: Default::default(),
+            mt_strobe: Default::default(),
+            mt_m: Default::default(),
+            mt_t: Default::default(),
+            mt_negative: Default::default(),
+            dt_active: Default::default(),
             sync_a: Default::default(),
             sync_b: Default::default(),
             sync_z: Default::default(),
@@ -219,6 +248,10 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             timebase: Default::default(),
             table1: Default::default(),
             calc: Default::default(),
+            tag: SpeedTag::new(golden::speed_calc::latency_cycles(N as u32, F as u32)),
+            tag_position: Default::default(),
+            tag_nep: Default::default(),
+            tag_ndt: Default::default(),
             scale_n1: Default::default(),
             scale_n2: Default::default(),
             scale_n3: Default::default(),
@@ -266,7 +299,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
     fn update(&mut self) {
         clock!(
             self, clock, sync_a, sync_b, sync_z, startup, filter_a, filter_b, filter_z, decoder,
-            counter, timebase, table1, calc, hold, pc, et, mt, baseline, faults
+            counter, timebase, table1, calc, tag, hold, pc, et, mt, baseline, faults
         );
         dff_setup!(
             self,
@@ -277,7 +310,10 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             dt_reg,
             timeout_reg,
             cfg_error_reg,
-            mode_reg
+            mode_reg,
+            tag_position,
+            tag_nep,
+            tag_ndt
         );
 
         // A change of cfg_mode resets the core as `reset` does.
@@ -374,6 +410,22 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.scale_n1.shift.next = self.shift.val();
         self.scale_n2.shift.next = self.shift.val();
         self.scale_n3.shift.next = self.shift.val();
+        // What each speed was computed from, published with it (`SpeedTag`).
+        self.tag.reset.next = self.engine_reset.val();
+        self.tag.start.next = self.table1.update.val() & self.table1.primed.val();
+        self.tag.position.next = self.counter.position.val();
+        self.tag.nep.next = self.table1.nep.val();
+        self.tag.ndt.next = self.table1.ndt.val();
+        if self.tag.valid.val() {
+            self.tag_position.d.next = self.tag.tag_position.val();
+            self.tag_nep.d.next = self.tag.tag_nep.val();
+            self.tag_ndt.d.next = self.tag.tag_ndt.val();
+        }
+        if self.engine_reset.val() {
+            self.tag_position.d.next = 0.into();
+            self.tag_nep.d.next = self.n_zero.val();
+            self.tag_ndt.d.next = self.n_zero.val();
+        }
         self.hold.clear.next = self.engine_reset.val();
         self.hold.load.next = self.calc.valid.val();
         self.hold.n1_in.next = self.scale_n1.scaled.val();
@@ -442,6 +494,14 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.glitch_count.next = self.faults.glitch_count.val();
         self.illegal_count.next = self.decoder.illegal_count.val();
         self.rev_error_count.next = self.counter.rev_error_count.val();
+        self.speed_position.next = self.tag_position.q.val();
+        self.speed_nep.next = self.tag_nep.q.val();
+        self.speed_ndt.next = self.tag_ndt.q.val();
+        self.mt_strobe.next = self.mt.strobe.val();
+        self.mt_m.next = self.mt.m.val();
+        self.mt_t.next = self.mt.t.val();
+        self.mt_negative.next = self.mt.negative.val();
+        self.dt_active.next = self.dt_reg.q.val();
     }
 }
 

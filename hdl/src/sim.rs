@@ -120,34 +120,7 @@ impl<const N: usize, const P: usize, const S: usize> CoreSim for Driven<N, P, S>
         self.settle();
         self.cycle += 1;
         self.dump(self.cycle * self.period_ps);
-        let u = &self.uut;
-        let speed = |b: Bits<S>| signed(b.to_u64(), S);
-        CoreOutputs {
-            position: u.position.val().to_u64(),
-            z_latch: u.z_latch.val().to_u64(),
-            index: u.index.val(),
-            direction: u.direction.val(),
-            nep: u.nep.val().to_u64(),
-            ndt: u.ndt.val().to_u64(),
-            update: u.update.val(),
-            speed_n1: speed(u.speed_n1.val()),
-            speed_n2: speed(u.speed_n2.val()),
-            speed_n3: speed(u.speed_n3.val()),
-            speed_strobe: u.speed_strobe.val(),
-            speed_pc: speed(u.speed_pc.val()),
-            speed_et: speed(u.speed_et.val()),
-            speed_mt: speed(u.speed_mt.val()),
-            baseline_strobe: u.baseline_strobe.val(),
-            valid: u.valid.val(),
-            stalled: u.stalled.val(),
-            fault_illegal: u.fault_illegal.val(),
-            fault_overspeed: u.fault_overspeed.val(),
-            fault_revolution: u.fault_revolution.val(),
-            cfg_error: u.cfg_error.val(),
-            glitch_count: u.glitch_count.val().to_u64(),
-            illegal_count: u.illegal_count.val().to_u64(),
-            rev_error_count: u.rev_error_count.val().to_u64(),
-        }
+        core_outputs(&self.uut)
     }
 
     fn ts_count(&self) -> u64 {
@@ -168,6 +141,48 @@ impl<const N: usize, const P: usize, const S: usize> CoreSim for Driven<N, P, S>
         // VCDProbe owns the writer; dropping it flushes a BufWriter and closes the file.
         self.vcd.take();
         Ok(())
+    }
+}
+
+/// The outputs of a rust-hdl core as they stand, in the golden model's form (the core
+/// harness and the tops that embed the core share it).
+pub fn core_outputs<const N: usize, const P: usize, const S: usize>(
+    u: &EncspeedCore<N, P, S>,
+) -> CoreOutputs {
+    let speed = |b: Bits<S>| signed(b.to_u64(), S);
+    CoreOutputs {
+        position: u.position.val().to_u64(),
+        z_latch: u.z_latch.val().to_u64(),
+        index: u.index.val(),
+        direction: u.direction.val(),
+        nep: u.nep.val().to_u64(),
+        ndt: u.ndt.val().to_u64(),
+        update: u.update.val(),
+        speed_n1: speed(u.speed_n1.val()),
+        speed_n2: speed(u.speed_n2.val()),
+        speed_n3: speed(u.speed_n3.val()),
+        speed_strobe: u.speed_strobe.val(),
+        speed_pc: speed(u.speed_pc.val()),
+        speed_et: speed(u.speed_et.val()),
+        speed_mt: speed(u.speed_mt.val()),
+        baseline_strobe: u.baseline_strobe.val(),
+        valid: u.valid.val(),
+        stalled: u.stalled.val(),
+        fault_illegal: u.fault_illegal.val(),
+        fault_overspeed: u.fault_overspeed.val(),
+        fault_revolution: u.fault_revolution.val(),
+        cfg_error: u.cfg_error.val(),
+        glitch_count: u.glitch_count.val().to_u64(),
+        illegal_count: u.illegal_count.val().to_u64(),
+        rev_error_count: u.rev_error_count.val().to_u64(),
+        speed_position: u.speed_position.val().to_u64(),
+        speed_nep: u.speed_nep.val().to_u64(),
+        speed_ndt: u.speed_ndt.val().to_u64(),
+        mt_strobe: u.mt_strobe.val(),
+        mt_m: u.mt_m.val().to_u64(),
+        mt_t: u.mt_t.val().to_u64(),
+        mt_negative: u.mt_negative.val(),
+        dt_active: u.dt_active.val().to_u64(),
     }
 }
 

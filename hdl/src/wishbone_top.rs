@@ -216,34 +216,7 @@ impl<const N: usize, const P: usize, const S: usize> WbSim for Driven<N, P, S> {
     }
 
     fn core_outputs(&self) -> CoreOutputs {
-        let c = &self.uut.core;
-        let speed = |b: Bits<S>| crate::sim::signed(b.to_u64(), S);
-        CoreOutputs {
-            position: c.position.val().to_u64(),
-            z_latch: c.z_latch.val().to_u64(),
-            index: c.index.val(),
-            direction: c.direction.val(),
-            nep: c.nep.val().to_u64(),
-            ndt: c.ndt.val().to_u64(),
-            update: c.update.val(),
-            speed_n1: speed(c.speed_n1.val()),
-            speed_n2: speed(c.speed_n2.val()),
-            speed_n3: speed(c.speed_n3.val()),
-            speed_strobe: c.speed_strobe.val(),
-            speed_pc: speed(c.speed_pc.val()),
-            speed_et: speed(c.speed_et.val()),
-            speed_mt: speed(c.speed_mt.val()),
-            baseline_strobe: c.baseline_strobe.val(),
-            valid: c.valid.val(),
-            stalled: c.stalled.val(),
-            fault_illegal: c.fault_illegal.val(),
-            fault_overspeed: c.fault_overspeed.val(),
-            fault_revolution: c.fault_revolution.val(),
-            cfg_error: c.cfg_error.val(),
-            glitch_count: c.glitch_count.val().to_u64(),
-            illegal_count: c.illegal_count.val().to_u64(),
-            rev_error_count: c.rev_error_count.val().to_u64(),
-        }
+        crate::sim::core_outputs(&self.uut.core)
     }
 
     fn regs_outputs(&self) -> WbRegsOutputs {

@@ -37,9 +37,66 @@ fn speed_bits_of(verilog: &str) -> Result<u32, String> {
 }
 
 /// The two's complement value of the low `bits` bits of `raw`.
-fn signed(raw: u64, bits: u32) -> i64 {
+pub fn signed(raw: u64, bits: u32) -> i64 {
     let sh = 64 - bits;
     ((raw << sh) as i64) >> sh
+}
+
+/// One harness input line (no newline): the core's inputs in the order of harness.cpp.
+pub fn input_line(i: &CoreInputs) -> String {
+    format!(
+        "{} {} {} {} {} {} {} {} {} {}",
+        i.reset as u8,
+        i.enc_a as u8,
+        i.enc_b as u8,
+        i.enc_z as u8,
+        i.cfg_dt,
+        i.cfg_timeout,
+        i.cfg_filter,
+        i.cfg_mode,
+        i.cfg_z_mode,
+        i.clear_faults as u8
+    )
+}
+
+/// The core's outputs from the first 32 fields a harness printed (order of harness.cpp),
+/// speeds sign-extended from `speed_bits`.
+pub fn outputs_of_fields(f: &[u64], speed_bits: u32) -> CoreOutputs {
+    let sp = |raw: u64| signed(raw, speed_bits);
+    CoreOutputs {
+        position: f[0],
+        z_latch: f[1],
+        index: f[2] != 0,
+        direction: f[3] != 0,
+        nep: f[4],
+        ndt: f[5],
+        update: f[6] != 0,
+        speed_n1: sp(f[7]),
+        speed_n2: sp(f[8]),
+        speed_n3: sp(f[9]),
+        speed_strobe: f[10] != 0,
+        speed_pc: sp(f[11]),
+        speed_et: sp(f[12]),
+        speed_mt: sp(f[13]),
+        baseline_strobe: f[14] != 0,
+        valid: f[15] != 0,
+        stalled: f[16] != 0,
+        fault_illegal: f[17] != 0,
+        fault_overspeed: f[18] != 0,
+        fault_revolution: f[19] != 0,
+        cfg_error: f[20] != 0,
+        glitch_count: f[21],
+        illegal_count: f[22],
+        rev_error_count: f[23],
+        speed_position: f[24],
+        speed_nep: f[25],
+        speed_ndt: f[26],
+        mt_strobe: f[27] != 0,
+        mt_m: f[28],
+        mt_t: f[29],
+        mt_negative: f[30] != 0,
+        dt_active: f[31],
+    }
 }
 
 /// Write the emitted Verilog and the waivers into `dir` for a tool to read.
@@ -94,55 +151,12 @@ impl Verilated {
         inputs: &[CoreInputs],
         vcd: Option<&Path>,
     ) -> Result<Vec<CoreOutputs>, String> {
-        let text: String = inputs
+        let text: String = inputs.iter().map(|i| input_line(i) + "\n").collect();
+        let rows = stream_harness::stream(&self.exe, text, vcd, 32)?;
+        let outs = rows
             .iter()
-            .map(|i| {
-                format!(
-                    "{} {} {} {} {} {} {} {} {} {}\n",
-                    i.reset as u8,
-                    i.enc_a as u8,
-                    i.enc_b as u8,
-                    i.enc_z as u8,
-                    i.cfg_dt,
-                    i.cfg_timeout,
-                    i.cfg_filter,
-                    i.cfg_mode,
-                    i.cfg_z_mode,
-                    i.clear_faults as u8
-                )
-            })
+            .map(|f| outputs_of_fields(f, self.speed_bits))
             .collect();
-        let rows = stream_harness::stream(&self.exe, text, vcd, 24)?;
-        let mut outs = Vec::with_capacity(inputs.len());
-        for f in rows {
-            let sp = |raw: u64| signed(raw, self.speed_bits);
-            outs.push(CoreOutputs {
-                position: f[0],
-                z_latch: f[1],
-                index: f[2] != 0,
-                direction: f[3] != 0,
-                nep: f[4],
-                ndt: f[5],
-                update: f[6] != 0,
-                speed_n1: sp(f[7]),
-                speed_n2: sp(f[8]),
-                speed_n3: sp(f[9]),
-                speed_strobe: f[10] != 0,
-                speed_pc: sp(f[11]),
-                speed_et: sp(f[12]),
-                speed_mt: sp(f[13]),
-                baseline_strobe: f[14] != 0,
-                valid: f[15] != 0,
-                stalled: f[16] != 0,
-                fault_illegal: f[17] != 0,
-                fault_overspeed: f[18] != 0,
-                fault_revolution: f[19] != 0,
-                cfg_error: f[20] != 0,
-                glitch_count: f[21],
-                illegal_count: f[22],
-                rev_error_count: f[23],
-            });
-        }
         Ok(outs)
     }
 

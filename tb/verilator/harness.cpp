@@ -6,7 +6,8 @@
 // (speeds as raw unsigned port values; the Rust side sign-extends them),
 //   "position z_latch index direction nep ndt update speed_n1 speed_n2 speed_n3
 //    speed_strobe speed_pc speed_et speed_mt baseline_strobe valid stalled fault_illegal
-//    fault_overspeed fault_revolution cfg_error glitch_count illegal_count rev_error_count"
+//    fault_overspeed fault_revolution cfg_error glitch_count illegal_count rev_error_count
+//    speed_position speed_nep speed_ndt mt_strobe mt_m mt_t mt_negative dt_active"
 // exactly as golden::core::CoreModel::step does, so the Rust side compares line by line.
 //
 // Bench mode: "--bench CYCLES PERIOD DT" drives x1 quadrature (A, and B a quarter period
@@ -121,14 +122,17 @@ int main(int argc, char** argv) {
 #endif
         typedef unsigned long long u;
         printf("%llu %llu %u %u %llu %llu %u %llu %llu %llu %u %llu %llu %llu %u %u %u %u %u %u %u "
-               "%u %u %u\n",
+               "%u %u %u %llu %llu %llu %u %llu %llu %u %llu\n",
                (u)top.position, (u)top.z_latch, (unsigned)top.index, (unsigned)top.direction,
                (u)top.nep, (u)top.ndt, (unsigned)top.update, (u)top.speed_n1, (u)top.speed_n2,
                (u)top.speed_n3, (unsigned)top.speed_strobe, (u)top.speed_pc, (u)top.speed_et,
                (u)top.speed_mt, (unsigned)top.baseline_strobe, (unsigned)top.valid,
                (unsigned)top.stalled, (unsigned)top.fault_illegal, (unsigned)top.fault_overspeed,
                (unsigned)top.fault_revolution, (unsigned)top.cfg_error, (unsigned)top.glitch_count,
-               (unsigned)top.illegal_count, (unsigned)top.rev_error_count);
+               (unsigned)top.illegal_count, (unsigned)top.rev_error_count,
+               (u)top.speed_position, (u)top.speed_nep, (u)top.speed_ndt,
+               (unsigned)top.mt_strobe, (u)top.mt_m, (u)top.mt_t, (unsigned)top.mt_negative,
+               (u)top.dt_active);
         ++cycle;
     }
 #if VM_TRACE

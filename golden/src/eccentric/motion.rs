@@ -276,6 +276,36 @@ impl EccentricDisc {
         edges_of(&self.crossings(motion), self.disc.lines)
     }
 
+    /// The A/B/Z levels at t = 0 and every change as a clock of `clock_hz` samples them:
+    /// (k, levels from cycle k on), cycle k sampling t_k = k/clock_hz, an edge at t being
+    /// seen from the first t_k ≥ t (as [`crate::plant::ClockSampler`]); edges in the same
+    /// cycle are merged. The compact form of a long run (a revolution at 30 r/min is
+    /// 2·10^8 cycles at 100 MHz).
+    pub fn clock_changes(
+        &self,
+        motion: &impl ShaftMotion,
+        clock_hz: f64,
+    ) -> (Sample, Vec<(u64, Sample)>) {
+        let initial = self.initial_levels(motion);
+        let mut levels = initial;
+        let mut out: Vec<(u64, Sample)> = Vec::new();
+        for e in self.edges(motion) {
+            let mut k = (e.t * clock_hz).ceil().max(0.0) as u64;
+            while (k as f64 / clock_hz) < e.t {
+                k += 1;
+            }
+            while k > 0 && ((k - 1) as f64 / clock_hz) >= e.t {
+                k -= 1;
+            }
+            levels.apply(&e);
+            match out.last_mut() {
+                Some(last) if last.0 == k => last.1 = levels,
+                _ => out.push((k, levels)),
+            }
+        }
+        (initial, out)
+    }
+
     /// (line index m, instant t (s)) of every forward crossing of a whole line x = m.
     /// For a forward motion these are the rising edges of A, with their line numbers.
     pub fn line_crossings(&self, motion: &impl ShaftMotion) -> Vec<(i64, f64)> {

@@ -1,0 +1,131 @@
+//! Bit-true model of `encspeed_ecc`: `encspeed_core` with the eccentricity-corrected M/T
+//! speed ([`crate::mt_corrector`]) of every window, from runtime coefficients `ecc_c`,
+//! `ecc_d` (c = E·cos θ0, d = E·sin θ0, Q15.16 lines: [`crate::ecc_delta::coefficients`]).
+//!
+//! Every output of the core is an output of the top, unchanged. Added: `speed_mtc` (format
+//! of `speed_mt`) and `mtc_strobe`, [`crate::mt_corrector::latency_cycles`] edges after the
+//! `mt_strobe` of the window (164 at N = 24), while `speed_mt` of the same window comes at
+//! `baseline_strobe`. A window closing while the corrector is busy replaces a pending one
+//! (the latest wins): with dt at least the latency, every window is corrected.
+//! `reset` and a change of `cfg_mode` reset the corrector as they reset the core.
+
+use crate::baseline_speeds::BaselineFormat;
+use crate::core::{mode_shift, CoreInputs, CoreModel, CoreOutputs};
+use crate::mt_corrector::{MtCorrectorModel, MtJob};
+use crate::params::{Params, SPEED_FRAC_BITS};
+
+/// Address and data bits of the corrector's sine table (K entries of 24 bits, addressed
+/// with 16 bits: any K ≤ 2^16).
+pub fn table_bits() -> (u32, u32) {
+    (TABLE_ADDRESS_BITS, TABLE_DATA_BITS)
+}
+
+/// Address width of the sine table.
+pub const TABLE_ADDRESS_BITS: u32 = 16;
+
+/// Width of the sine table's entries.
+pub const TABLE_DATA_BITS: u32 = 24;
+
+/// Why `p` cannot have the eccentricity corrector (the sine table needs a multiple of 4
+/// lines, 4 ≤ K ≤ 2^16), or Ok.
+pub fn check(p: &Params) -> Result<(), String> {
+    crate::ecc_delta::check_params(p.lines(), TABLE_ADDRESS_BITS, TABLE_DATA_BITS)
+        .map_err(|e| format!("encspeed_ecc: {e}"))
+}
+
+/// Inputs of `encspeed_ecc` in one cycle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct EccTopInputs {
+    /// The core's inputs.
+    pub core: CoreInputs,
+    /// c = E·cos θ0, Q15.16 lines (value; the port is 32-bit two's complement).
+    pub ecc_c: i64,
+    /// d = E·sin θ0, Q15.16 lines.
+    pub ecc_d: i64,
+}
+
+/// Outputs of `encspeed_ecc` after a rising edge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct EccTopOutputs {
+    /// The core's outputs.
+    pub core: CoreOutputs,
+    /// Corrected M/T speed (format of `speed_mt`), held.
+    pub speed_mtc: i64,
+    /// One cycle: `speed_mtc` was just written.
+    pub mtc_strobe: bool,
+}
+
+/// Cycle model of `encspeed_ecc`.
+#[derive(Clone, Debug)]
+pub struct EccTopModel {
+    core: CoreModel,
+    mtc: MtCorrectorModel,
+    mode_reg: u8,
+}
+
+impl EccTopModel {
+    /// The top for validated parameters, in its state after reset. Panics where [`check`]
+    /// refuses `p`.
+    pub fn new(p: &Params) -> Self {
+        check(p).unwrap_or_else(|e| panic!("{e}"));
+        let format = BaselineFormat::new(p.counter_bits(), SPEED_FRAC_BITS)
+            .expect("validated parameters give a legal baseline format");
+        Self {
+            core: CoreModel::new(p),
+            mtc: MtCorrectorModel::new(p.lines(), table_bits(), format),
+            mode_reg: 0,
+        }
+    }
+
+    /// One rising edge with `inp`; the outputs after it.
+    pub fn step(&mut self, inp: EccTopInputs) -> EccTopOutputs {
+        let c = &inp.core;
+        let before = self.core.outputs();
+        let rst = c.reset || c.cfg_mode != self.mode_reg;
+        self.mode_reg = c.cfg_mode;
+        let job = before.mt_strobe.then_some(MtJob {
+            position: before.position,
+            mt_m: before.mt_m,
+            mt_t: before.mt_t,
+            mt_negative: before.mt_negative,
+            cfg_dt: before.dt_active,
+            mode_shift: mode_shift(c.cfg_mode),
+            coef_c: inp.ecc_c,
+            coef_d: inp.ecc_d,
+        });
+        let mtc = self.mtc.step(rst, job);
+        let core = self.core.step(inp.core);
+        EccTopOutputs {
+            core,
+            speed_mtc: mtc.speed_mtc,
+            mtc_strobe: mtc.valid,
+        }
+    }
+}
+
+/// Per-cycle inputs of a run on an eccentric disc: the levels of `changes` (from
+/// [`crate::eccentric::motion::EccentricDisc::clock_changes`]) for `cycles` cycles, reset
+/// for the first 3, `core` giving the configuration and the coefficients held throughout.
+pub fn disc_inputs(
+    initial: crate::plant::Sample,
+    changes: &[(u64, crate::plant::Sample)],
+    cycles: u64,
+    config: EccTopInputs,
+) -> Vec<EccTopInputs> {
+    let mut levels = initial;
+    let mut next = 0;
+    (0..cycles)
+        .map(|k| {
+            while next < changes.len() && changes[next].0 <= k {
+                levels = changes[next].1;
+                next += 1;
+            }
+            let mut i = config;
+            i.core.reset = k < 3;
+            i.core.enc_a = levels.a;
+            i.core.enc_b = levels.b;
+            i.core.enc_z = levels.z;
+            i
+        })
+        .collect()
+}

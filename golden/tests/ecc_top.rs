@@ -1,0 +1,97 @@
+//! `encspeed_ecc`'s bit-true model on the rigid eccentric disc: the corrected M/T speed of
+//! every window against the plant's constant shaft speed (the position aligned to the disc's
+//! lines by the index, `cfg_z_mode` = 1). The Verilog's figures: tb/tests/ecc_top.rs.
+
+use golden::bittrue::CoreInputs;
+use golden::ecc_delta::coefficients;
+use golden::ecc_top::{EccTopInputs, EccTopModel};
+use golden::eccentric::correct::once_per_rev;
+use golden::eccentric::motion::EccentricDisc;
+use golden::eccentric::{Eccentricity, Model};
+use golden::params::{Params, Spec};
+use golden::plant::{ClockSampler, Profile};
+use std::f64::consts::TAU;
+
+const K: u32 = 1024;
+const CLOCK: f64 = 100e6;
+const DT: u64 = 100_000;
+
+fn params() -> Params {
+    Params::new(Spec {
+        clock_hz: CLOCK,
+        lines: K,
+        dt_cycles: DT,
+        counter_bits: 24,
+        ..Default::default()
+    })
+    .unwrap()
+}
+
+#[test]
+fn corrected_mt_on_the_rigid_disc() {
+    let p = params();
+    let (e, theta0) = (0.35 / 30.0, 50f64.to_radians());
+    let (c, d) = coefficients(K, e, theta0);
+    for rpm in [6000.0, 600.0] {
+        let rps: f64 = rpm / 60.0;
+        let revs = 2.2;
+        let profile = Profile::constant(rps, revs / rps).unwrap();
+        let disc =
+            EccentricDisc::new(K, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
+        let edges = disc.edges(&profile);
+        let n = (profile.duration() * CLOCK) as u64;
+        let sampler = ClockSampler::new(disc.initial_levels(&profile), &edges, CLOCK, n).unwrap();
+        let mut top = EccTopModel::new(&p);
+        let r = rps * f64::from(K) * DT as f64 / CLOCK;
+        let (mut before, mut after) = (vec![], vec![]);
+        let t0 = std::time::Instant::now();
+        let mut aligned = false;
+        for (k, s) in sampler.enumerate() {
+            let o = top.step(EccTopInputs {
+                core: CoreInputs {
+                    reset: k < 3,
+                    enc_a: s.a,
+                    enc_b: s.b,
+                    enc_z: s.z,
+                    cfg_z_mode: 1,
+                    ..Default::default()
+                },
+                ecc_c: c,
+                ecc_d: d,
+            });
+            let t = k as f64 / CLOCK;
+            aligned |= o.core.index;
+            if !aligned {
+                continue;
+            }
+            if o.core.baseline_strobe && o.core.speed_mt != 0 {
+                before.push((TAU * rps * t, o.core.speed_mt as f64 / 65536.0 / r - 1.0));
+            }
+            if o.mtc_strobe && o.speed_mtc != 0 {
+                after.push((TAU * rps * t, o.speed_mtc as f64 / 65536.0 / r - 1.0));
+            }
+        }
+        let take_rev = |v: &[(f64, f64)]| -> Vec<(f64, f64)> {
+            let a0 = v[0].0;
+            v.iter().copied().filter(|x| x.0 < a0 + TAU).collect()
+        };
+        let (b, a) = (take_rev(&before), take_rev(&after));
+        let (h_before, h_after) = (once_per_rev(&b), once_per_rev(&a));
+        // The eccentricity's ripple is there before (about e), and the correction takes
+        // more than 1000x of it away: M/T's quantisation is the floor.
+        assert!(h_before > 0.9 * e, "{rpm} rpm: 1/rev before {h_before}");
+        assert!(
+            h_before / h_after > 1000.0,
+            "{rpm} rpm: 1/rev {h_before} -> {h_after}"
+        );
+        println!(
+            "{rpm} rpm: {} cycles in {:?}; {} / {} estimates; 1/rev before {:.1} ppm after {:.3} ppm",
+            n,
+            t0.elapsed(),
+            b.len(),
+            a.len(),
+            once_per_rev(&b) * 1e6,
+            once_per_rev(&a) * 1e6
+        );
+    }
+}
