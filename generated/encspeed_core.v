@@ -41,7 +41,7 @@
 //   output glitch_count[15:0]: pulses rejected by the A, B and Z filters since reset, saturating
 //   output illegal_count[15:0]: illegal transitions since reset, saturating
 //   output rev_error_count[15:0]: revolutions with a wrong count since reset, saturating
-//   output speed_position[31:0]: with speed_strobe, held: position in the cycle of the update whose nep/ndt the speeds were computed from (the span end for an eccentricity correction); 0 after reset or a reversal
+//   output speed_position[31:0]: with speed_strobe, held: the end of the span of disc the speeds measure: for nep = 1 the position of the restart pulse that wrote ndt, for nep >= 2 that of the last pulse of the window that wrote nep (which started nep - 1 steps before it); for an eccentricity correction; 0 after reset or a reversal
 //   output speed_nep[23:0]: with speed_strobe, held: the nep the speeds were computed from
 //   output speed_ndt[23:0]: with speed_strobe, held: the ndt the speeds were computed from
 //   output mt_strobe: one cycle: the M/T counter closed a window; mt_m, mt_t, mt_negative were just written and position in this cycle is that of the window's last step; speed_mt follows at baseline_strobe
@@ -197,6 +197,8 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     wire  [23:0] table1$ndt;
     wire  table1$update;
     wire  table1$primed;
+    wire  table1$wrote_nep;
+    wire  table1$restarted;
     reg  calc$clock;
     reg  calc$reset;
     reg  calc$start;
@@ -227,6 +229,15 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     reg  [23:0] tag_ndt$d;
     wire  [23:0] tag_ndt$q;
     reg  tag_ndt$clock;
+    reg  [31:0] window_last$d;
+    wire  [31:0] window_last$q;
+    reg  window_last$clock;
+    reg  [31:0] restart_pos$d;
+    wire  [31:0] restart_pos$q;
+    reg  restart_pos$clock;
+    reg  [31:0] position_before$d;
+    wire  [31:0] position_before$q;
+    reg  position_before$clock;
     reg  [40:0] scale_n1$value;
     reg  [1:0] scale_n1$shift;
     wire  [40:0] scale_n1$scaled;
@@ -325,6 +336,8 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     reg  mode_reg$clock;
     
     // Local signals
+    reg  [31:0] restart_now;
+    reg  [31:0] window_now;
     reg  rst;
     reg  front_reset;
     reg  first_step;
@@ -436,7 +449,9 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         .nep(table1$nep),
         .ndt(table1$ndt),
         .update(table1$update),
-        .primed(table1$primed)
+        .primed(table1$primed),
+        .wrote_nep(table1$wrote_nep),
+        .restarted(table1$restarted)
     );
     encspeed_core$calc calc(
         .clock(calc$clock),
@@ -477,6 +492,21 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         .d(tag_ndt$d),
         .q(tag_ndt$q),
         .clock(tag_ndt$clock)
+    );
+    encspeed_core$window_last window_last(
+        .d(window_last$d),
+        .q(window_last$q),
+        .clock(window_last$clock)
+    );
+    encspeed_core$restart_pos restart_pos(
+        .d(restart_pos$d),
+        .q(restart_pos$q),
+        .clock(restart_pos$clock)
+    );
+    encspeed_core$position_before position_before(
+        .d(position_before$d),
+        .q(position_before$q),
+        .clock(position_before$clock)
     );
     encspeed_core$scale_n1 scale_n1(
         .value(scale_n1$value),
@@ -638,6 +668,9 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         tag_position$clock = clock;
         tag_nep$clock = clock;
         tag_ndt$clock = clock;
+        window_last$clock = clock;
+        restart_pos$clock = clock;
+        position_before$clock = clock;
         have_dir$d = have_dir$q;
         last_dir$d = last_dir$q;
         et_have$d = et_have$q;
@@ -648,6 +681,9 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         tag_position$d = tag_position$q;
         tag_nep$d = tag_nep$q;
         tag_ndt$d = tag_ndt$q;
+        window_last$d = window_last$q;
+        restart_pos$d = restart_pos$q;
+        position_before$d = position_before$q;
         mode_reg$d = cfg_mode;
         rst = reset | (cfg_mode != mode_reg$q);
         dt_eff = cfg_dt;
@@ -734,7 +770,25 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         scale_n3$shift = shift;
         tag$reset = engine_reset;
         tag$start = table1$update & table1$primed;
-        tag$position = counter$position;
+        position_before$d = counter$position;
+        restart_now = restart_pos$q;
+        if (table1$restarted) begin
+            restart_now = counter$position;
+        end
+        window_now = window_last$q;
+        if (table1$wrote_nep) begin
+            window_now = position_before$q;
+        end
+        restart_pos$d = restart_now;
+        window_last$d = window_now;
+        if (engine_reset) begin
+            window_last$d = 32'h0;
+            restart_pos$d = 32'h0;
+        end
+        tag$position = window_now;
+        if (table1$nep == n_one) begin
+            tag$position = restart_now;
+        end
         tag$nep = table1$nep;
         tag$ndt = table1$ndt;
         if (tag$valid) begin
@@ -6487,6 +6541,44 @@ module encspeed_core$pc$strobe_reg(d,q,clock);
 endmodule // encspeed_core$pc$strobe_reg
 
 
+module encspeed_core$position_before(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$position_before
+
+
+module encspeed_core$restart_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$restart_pos
+
+
 module encspeed_core$scale_n1(value,shift,scaled);
     
     // Module arguments
@@ -7013,7 +7105,7 @@ module encspeed_core$sync_z$stable(d,q,clock);
 endmodule // encspeed_core$sync_z$stable
 
 
-module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,primed);
+module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,primed,wrote_nep,restarted);
     
     // Module arguments
     input wire  clock;
@@ -7026,6 +7118,8 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
     output reg  [23:0] ndt;
     output reg  update;
     output reg  primed;
+    output reg  wrote_nep;
+    output reg  restarted;
     
     // Constant declarations
     localparam  zero = 24'h0;
@@ -7033,6 +7127,12 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
     localparam  saturated = 24'hffffff;
     
     // Stub signals
+    reg  wrote_nep_reg$d;
+    wire  wrote_nep_reg$q;
+    reg  wrote_nep_reg$clock;
+    reg  restarted_reg$d;
+    wire  restarted_reg$q;
+    reg  restarted_reg$clock;
     reg  [23:0] cep$d;
     wire  [23:0] cep$q;
     reg  cep$clock;
@@ -7053,6 +7153,16 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
     reg  nep_write;
     
     // Sub module instances
+    encspeed_core$table1$wrote_nep_reg wrote_nep_reg(
+        .d(wrote_nep_reg$d),
+        .q(wrote_nep_reg$q),
+        .clock(wrote_nep_reg$clock)
+    );
+    encspeed_core$table1$restarted_reg restarted_reg(
+        .d(restarted_reg$d),
+        .q(restarted_reg$q),
+        .clock(restarted_reg$clock)
+    );
     encspeed_core$table1$cep cep(
         .d(cep$d),
         .q(cep$q),
@@ -7086,11 +7196,15 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
         ndt1$clock = clock;
         update_reg$clock = clock;
         primed_reg$clock = clock;
+        wrote_nep_reg$clock = clock;
+        restarted_reg$clock = clock;
         cep$d = cep$q;
         nep1$d = nep1$q;
         ndt1$d = ndt1$q;
         update_reg$d = update_reg$q;
         primed_reg$d = primed_reg$q;
+        wrote_nep_reg$d = wrote_nep_reg$q;
+        restarted_reg$d = restarted_reg$q;
         nep_write = tick & (cep$q != zero);
         if (nep_write) begin
             nep1$d = cep$q;
@@ -7105,6 +7219,8 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
             cep$d = zero;
         end
         update_reg$d = nep_write | restart;
+        wrote_nep_reg$d = nep_write;
+        restarted_reg$d = restart;
         primed_reg$d = primed_reg$q | restart;
         if (reset) begin
             primed_reg$d = 1'b0;
@@ -7115,11 +7231,15 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
             nep1$d = zero;
             ndt1$d = one;
             update_reg$d = 1'b0;
+            wrote_nep_reg$d = 1'b0;
+            restarted_reg$d = 1'b0;
         end
         nep = nep1$q;
         ndt = ndt1$q;
         update = update_reg$q;
         primed = primed_reg$q;
+        wrote_nep = wrote_nep_reg$q;
+        restarted = restarted_reg$q;
     end
     
 endmodule // encspeed_core$table1
@@ -7201,6 +7321,25 @@ module encspeed_core$table1$primed_reg(d,q,clock);
 endmodule // encspeed_core$table1$primed_reg
 
 
+module encspeed_core$table1$restarted_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$table1$restarted_reg
+
+
 module encspeed_core$table1$update_reg(d,q,clock);
     
     // Module arguments
@@ -7218,6 +7357,25 @@ module encspeed_core$table1$update_reg(d,q,clock);
     end
           
 endmodule // encspeed_core$table1$update_reg
+
+
+module encspeed_core$table1$wrote_nep_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$table1$wrote_nep_reg
 
 
 module encspeed_core$tag(clock,reset,start,position,nep,ndt,tag_position,tag_nep,tag_ndt,valid);
@@ -7882,3 +8040,22 @@ module encspeed_core$timeout_reg(d,q,clock);
     end
           
 endmodule // encspeed_core$timeout_reg
+
+
+module encspeed_core$window_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$window_last

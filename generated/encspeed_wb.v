@@ -416,6 +416,8 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     wire  [23:0] table1$ndt;
     wire  table1$update;
     wire  table1$primed;
+    wire  table1$wrote_nep;
+    wire  table1$restarted;
     reg  calc$clock;
     reg  calc$reset;
     reg  calc$start;
@@ -446,6 +448,15 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     reg  [23:0] tag_ndt$d;
     wire  [23:0] tag_ndt$q;
     reg  tag_ndt$clock;
+    reg  [31:0] window_last$d;
+    wire  [31:0] window_last$q;
+    reg  window_last$clock;
+    reg  [31:0] restart_pos$d;
+    wire  [31:0] restart_pos$q;
+    reg  restart_pos$clock;
+    reg  [31:0] position_before$d;
+    wire  [31:0] position_before$q;
+    reg  position_before$clock;
     reg  [40:0] scale_n1$value;
     reg  [1:0] scale_n1$shift;
     wire  [40:0] scale_n1$scaled;
@@ -544,6 +555,8 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     reg  mode_reg$clock;
     
     // Local signals
+    reg  [31:0] restart_now;
+    reg  [31:0] window_now;
     reg  rst;
     reg  front_reset;
     reg  first_step;
@@ -655,7 +668,9 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         .nep(table1$nep),
         .ndt(table1$ndt),
         .update(table1$update),
-        .primed(table1$primed)
+        .primed(table1$primed),
+        .wrote_nep(table1$wrote_nep),
+        .restarted(table1$restarted)
     );
     encspeed_wb$core$calc calc(
         .clock(calc$clock),
@@ -696,6 +711,21 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         .d(tag_ndt$d),
         .q(tag_ndt$q),
         .clock(tag_ndt$clock)
+    );
+    encspeed_wb$core$window_last window_last(
+        .d(window_last$d),
+        .q(window_last$q),
+        .clock(window_last$clock)
+    );
+    encspeed_wb$core$restart_pos restart_pos(
+        .d(restart_pos$d),
+        .q(restart_pos$q),
+        .clock(restart_pos$clock)
+    );
+    encspeed_wb$core$position_before position_before(
+        .d(position_before$d),
+        .q(position_before$q),
+        .clock(position_before$clock)
     );
     encspeed_wb$core$scale_n1 scale_n1(
         .value(scale_n1$value),
@@ -857,6 +887,9 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         tag_position$clock = clock;
         tag_nep$clock = clock;
         tag_ndt$clock = clock;
+        window_last$clock = clock;
+        restart_pos$clock = clock;
+        position_before$clock = clock;
         have_dir$d = have_dir$q;
         last_dir$d = last_dir$q;
         et_have$d = et_have$q;
@@ -867,6 +900,9 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         tag_position$d = tag_position$q;
         tag_nep$d = tag_nep$q;
         tag_ndt$d = tag_ndt$q;
+        window_last$d = window_last$q;
+        restart_pos$d = restart_pos$q;
+        position_before$d = position_before$q;
         mode_reg$d = cfg_mode;
         rst = reset | (cfg_mode != mode_reg$q);
         dt_eff = cfg_dt;
@@ -953,7 +989,25 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         scale_n3$shift = shift;
         tag$reset = engine_reset;
         tag$start = table1$update & table1$primed;
-        tag$position = counter$position;
+        position_before$d = counter$position;
+        restart_now = restart_pos$q;
+        if (table1$restarted) begin
+            restart_now = counter$position;
+        end
+        window_now = window_last$q;
+        if (table1$wrote_nep) begin
+            window_now = position_before$q;
+        end
+        restart_pos$d = restart_now;
+        window_last$d = window_now;
+        if (engine_reset) begin
+            window_last$d = 32'h0;
+            restart_pos$d = 32'h0;
+        end
+        tag$position = window_now;
+        if (table1$nep == n_one) begin
+            tag$position = restart_now;
+        end
         tag$nep = table1$nep;
         tag$ndt = table1$ndt;
         if (tag$valid) begin
@@ -6706,6 +6760,44 @@ module encspeed_wb$core$pc$strobe_reg(d,q,clock);
 endmodule // encspeed_wb$core$pc$strobe_reg
 
 
+module encspeed_wb$core$position_before(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$position_before
+
+
+module encspeed_wb$core$restart_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$restart_pos
+
+
 module encspeed_wb$core$scale_n1(value,shift,scaled);
     
     // Module arguments
@@ -7232,7 +7324,7 @@ module encspeed_wb$core$sync_z$stable(d,q,clock);
 endmodule // encspeed_wb$core$sync_z$stable
 
 
-module encspeed_wb$core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,primed);
+module encspeed_wb$core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,primed,wrote_nep,restarted);
     
     // Module arguments
     input wire  clock;
@@ -7245,6 +7337,8 @@ module encspeed_wb$core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,p
     output reg  [23:0] ndt;
     output reg  update;
     output reg  primed;
+    output reg  wrote_nep;
+    output reg  restarted;
     
     // Constant declarations
     localparam  zero = 24'h0;
@@ -7252,6 +7346,12 @@ module encspeed_wb$core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,p
     localparam  saturated = 24'hffffff;
     
     // Stub signals
+    reg  wrote_nep_reg$d;
+    wire  wrote_nep_reg$q;
+    reg  wrote_nep_reg$clock;
+    reg  restarted_reg$d;
+    wire  restarted_reg$q;
+    reg  restarted_reg$clock;
     reg  [23:0] cep$d;
     wire  [23:0] cep$q;
     reg  cep$clock;
@@ -7272,6 +7372,16 @@ module encspeed_wb$core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,p
     reg  nep_write;
     
     // Sub module instances
+    encspeed_wb$core$table1$wrote_nep_reg wrote_nep_reg(
+        .d(wrote_nep_reg$d),
+        .q(wrote_nep_reg$q),
+        .clock(wrote_nep_reg$clock)
+    );
+    encspeed_wb$core$table1$restarted_reg restarted_reg(
+        .d(restarted_reg$d),
+        .q(restarted_reg$q),
+        .clock(restarted_reg$clock)
+    );
     encspeed_wb$core$table1$cep cep(
         .d(cep$d),
         .q(cep$q),
@@ -7305,11 +7415,15 @@ module encspeed_wb$core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,p
         ndt1$clock = clock;
         update_reg$clock = clock;
         primed_reg$clock = clock;
+        wrote_nep_reg$clock = clock;
+        restarted_reg$clock = clock;
         cep$d = cep$q;
         nep1$d = nep1$q;
         ndt1$d = ndt1$q;
         update_reg$d = update_reg$q;
         primed_reg$d = primed_reg$q;
+        wrote_nep_reg$d = wrote_nep_reg$q;
+        restarted_reg$d = restarted_reg$q;
         nep_write = tick & (cep$q != zero);
         if (nep_write) begin
             nep1$d = cep$q;
@@ -7324,6 +7438,8 @@ module encspeed_wb$core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,p
             cep$d = zero;
         end
         update_reg$d = nep_write | restart;
+        wrote_nep_reg$d = nep_write;
+        restarted_reg$d = restart;
         primed_reg$d = primed_reg$q | restart;
         if (reset) begin
             primed_reg$d = 1'b0;
@@ -7334,11 +7450,15 @@ module encspeed_wb$core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,p
             nep1$d = zero;
             ndt1$d = one;
             update_reg$d = 1'b0;
+            wrote_nep_reg$d = 1'b0;
+            restarted_reg$d = 1'b0;
         end
         nep = nep1$q;
         ndt = ndt1$q;
         update = update_reg$q;
         primed = primed_reg$q;
+        wrote_nep = wrote_nep_reg$q;
+        restarted = restarted_reg$q;
     end
     
 endmodule // encspeed_wb$core$table1
@@ -7420,6 +7540,25 @@ module encspeed_wb$core$table1$primed_reg(d,q,clock);
 endmodule // encspeed_wb$core$table1$primed_reg
 
 
+module encspeed_wb$core$table1$restarted_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$table1$restarted_reg
+
+
 module encspeed_wb$core$table1$update_reg(d,q,clock);
     
     // Module arguments
@@ -7437,6 +7576,25 @@ module encspeed_wb$core$table1$update_reg(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$table1$update_reg
+
+
+module encspeed_wb$core$table1$wrote_nep_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$table1$wrote_nep_reg
 
 
 module encspeed_wb$core$tag(clock,reset,start,position,nep,ndt,tag_position,tag_nep,tag_ndt,valid);
@@ -8101,6 +8259,25 @@ module encspeed_wb$core$timeout_reg(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$timeout_reg
+
+
+module encspeed_wb$core$window_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$window_last
 
 
 module encspeed_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);

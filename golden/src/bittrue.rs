@@ -34,6 +34,10 @@ pub struct Table1State {
     pub ndt1: u64,
     /// Registered update strobe.
     pub update: bool,
+    /// The last step wrote Nep1 (a tick with Cep ≠ 0).
+    pub wrote_nep: bool,
+    /// The last step was a restart (it wrote Ndt1).
+    pub restarted: bool,
 }
 
 /// Rairán's Table 1, one step per clock cycle, saturating.
@@ -130,6 +134,8 @@ impl Table1 {
             cdt_after_pulse
         };
         n.update = nep_write || restart;
+        n.wrote_nep = nep_write;
+        n.restarted = restart;
         self.s = n;
         self.outputs()
     }

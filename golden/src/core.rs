@@ -153,9 +153,10 @@ pub struct CoreOutputs {
     pub illegal_count: u64,
     /// Revolutions with the wrong count (saturating).
     pub rev_error_count: u64,
-    /// With `speed_strobe` (held until the next): `position` in the cycle of the `update`
-    /// whose Nep1/Ndt1 the speeds were computed from (the span end of an eccentricity
-    /// correction, `golden::ecc_top`).
+    /// With `speed_strobe` (held until the next): the end of the span of disc the speeds
+    /// measure, as a position: for Nep1 = 1 the restart pulse that wrote Ndt1, for
+    /// Nep1 ≥ 2 the last pulse of the window that wrote Nep1 (which started Nep1 − 1 steps
+    /// before it). The eccentricity correction of n3 needs it (`golden::ecc_top`).
     pub speed_position: u64,
     /// With `speed_strobe`: the Nep1 the speeds were computed from.
     pub speed_nep: u64,
@@ -242,6 +243,9 @@ pub struct CoreModel {
     tag: LatestRequest<SpeedTag, SpeedTag>,
     tag_out: SpeedTag,
     speed_tag: SpeedTag,
+    window_last: u64,
+    restart_pos: u64,
+    restart_seen: bool,
     speeds: Speeds,
     speed_strobe: bool,
     speed_ok: bool,
@@ -287,6 +291,9 @@ impl CoreModel {
             tag: LatestRequest::new(),
             tag_out: SpeedTag::default(),
             speed_tag: SpeedTag::default(),
+            window_last: 0,
+            restart_pos: 0,
+            restart_seen: false,
             speeds: Speeds::default(),
             speed_strobe: false,
             speed_ok: false,
@@ -398,11 +405,35 @@ impl CoreModel {
             negative: !self.last_dir,
         });
         let tag_before = self.tag_out;
+        // Span ends (`speed_position`): the restart pulse is in `position` the edge after
+        // its restart; the window's last pulse is `position` at the tick that writes Nep1
+        // (a pulse on that tick is not in the window).
+        let restart_now = if self.restart_seen {
+            pos.position
+        } else {
+            self.restart_pos
+        };
         let request = calc_start.then_some(SpeedTag {
-            position: pos.position,
+            position: if t1.nep == 1 {
+                restart_now
+            } else {
+                self.window_last
+            },
             nep: t1.nep,
             ndt: t1.ndt,
         });
+        let written = self.engine.state();
+        if engine_reset {
+            self.window_last = 0;
+            self.restart_pos = 0;
+            self.restart_seen = false;
+        } else {
+            if written.wrote_nep {
+                self.window_last = pos.position;
+            }
+            self.restart_pos = restart_now;
+            self.restart_seen = written.restarted;
+        }
         if let Some(t) = self
             .tag
             .edge(request, engine_reset, self.calc_latency, |t| t)

@@ -126,6 +126,13 @@ pub fn corrected(n3: i64, delta: i64, nep_is_one: bool, ndt_is_one: bool, speed_
     }
 }
 
+/// What the block outputs for the request `r` with S = `speed_bits`: [`corrected`], the
+/// most negative S-bit n3 (which has no magnitude in S − 1 bits) taken as saturated.
+pub fn block_result(r: &EccN3Inputs, speed_bits: u32) -> i64 {
+    let n3 = r.n3.max(-((1 << (speed_bits - 1)) - 1));
+    corrected(n3, r.delta, r.nep_is_one, r.ndt_is_one, speed_bits)
+}
+
 /// Inputs during one clock cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct EccN3Inputs {
@@ -191,11 +198,10 @@ impl EccN3 {
             ..self.out
         };
         let start = inp.start.then_some(inp);
-        if let Some(result) = self.timing.edge(start, inp.reset, LATENCY_CYCLES, |r| {
-            // The most negative S-bit value has no magnitude in S − 1 bits: it saturates.
-            let n3 = r.n3.max(-((1 << (s - 1)) - 1));
-            corrected(n3, r.delta, r.nep_is_one, r.ndt_is_one, s)
-        }) {
+        if let Some(result) = self
+            .timing
+            .edge(start, inp.reset, LATENCY_CYCLES, |r| block_result(&r, s))
+        {
             out.n3c = result;
             out.valid = true;
         }

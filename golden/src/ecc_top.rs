@@ -12,6 +12,7 @@
 use crate::baseline_speeds::BaselineFormat;
 use crate::core::{mode_shift, CoreInputs, CoreModel, CoreOutputs};
 use crate::mt_corrector::{MtCorrectorModel, MtJob};
+use crate::n3_corrector::{N3CorrectorModel, N3Job};
 use crate::params::{Params, SPEED_FRAC_BITS};
 
 /// Address and data bits of the corrector's sine table (K entries of 24 bits, addressed
@@ -53,6 +54,10 @@ pub struct EccTopOutputs {
     pub speed_mtc: i64,
     /// One cycle: `speed_mtc` was just written.
     pub mtc_strobe: bool,
+    /// Corrected n3 (format of `speed_n3`), held.
+    pub speed_n3c: i64,
+    /// One cycle: `speed_n3c` was just written.
+    pub n3c_strobe: bool,
 }
 
 /// Cycle model of `encspeed_ecc`.
@@ -60,6 +65,7 @@ pub struct EccTopOutputs {
 pub struct EccTopModel {
     core: CoreModel,
     mtc: MtCorrectorModel,
+    n3c: N3CorrectorModel,
     mode_reg: u8,
 }
 
@@ -73,6 +79,7 @@ impl EccTopModel {
         Self {
             core: CoreModel::new(p),
             mtc: MtCorrectorModel::new(p.lines(), table_bits(), format),
+            n3c: N3CorrectorModel::new(p.lines(), table_bits(), p.counter_bits(), p.speed_bits()),
             mode_reg: 0,
         }
     }
@@ -93,12 +100,24 @@ impl EccTopModel {
             coef_c: inp.ecc_c,
             coef_d: inp.ecc_d,
         });
+        let n3_job = before.speed_strobe.then_some(N3Job {
+            n3: before.speed_n3,
+            position: before.speed_position,
+            nep: before.speed_nep,
+            ndt: before.speed_ndt,
+            mode_shift: mode_shift(c.cfg_mode),
+            coef_c: inp.ecc_c,
+            coef_d: inp.ecc_d,
+        });
         let mtc = self.mtc.step(rst, job);
+        let n3c = self.n3c.step(rst, n3_job);
         let core = self.core.step(inp.core);
         EccTopOutputs {
             core,
             speed_mtc: mtc.speed_mtc,
             mtc_strobe: mtc.valid,
+            speed_n3c: n3c.n3c,
+            n3c_strobe: n3c.valid,
         }
     }
 }

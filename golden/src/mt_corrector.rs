@@ -13,7 +13,7 @@
 //! ```
 //!
 //! (the positions only matter mod R: a window of whole revolutions has δ = 0). δ of that
-//! span in half-steps (p = 2·position) comes from [`crate::ecc_delta::delta_raw`], and the
+//! span comes from [`crate::span_delta`], and the
 //! speed is [`crate::ecc_mt_speed::ecc_mt_speed`] of (m, t, negative, dt, s, δ):
 //! ±(m − δ)·dt·2^(F−s)/t. For a backward window the magnitude of the true motion is
 //! m − δ of the span taken upwards, which is why the span is always in increasing order
@@ -22,24 +22,22 @@
 //!
 //! # Timing ([`latency_cycles`])
 //! One request register, the latest `start` wins ([`crate::latest_request`]): take (1 edge),
-//! m mod R by restoring subtraction (N edges), span and EccDelta start (1 edge), EccDelta
-//! (68), EccMtSpeed (2N + F + 4 from its start, the edge after δ), output register (1):
-//! 3N + F + 76 edges from a start (idle) to `valid` (164 at N = 24, F = 16). Reset
-//! abandons everything; `speed_mtc` is then 0.
+//! `SpanDelta` started the next edge (N + 68 to δ), EccMtSpeed started the edge after δ
+//! (2N + F + 4), output register (1): 3N + F + 76 edges from a start (idle) to `valid`
+//! (164 at N = 24, F = 16). Reset abandons everything; `speed_mtc` is then 0.
 
 use crate::baseline_speeds::BaselineFormat;
-use crate::ecc_delta::{self, delta_raw, Request};
 use crate::ecc_mt_speed::{self, ecc_mt_speed, EccMtRequest};
 use crate::latest_request::LatestRequest;
+use crate::span_delta::{self, span_delta, SpanRequest};
 
 /// Edges from a start (block idle) to `valid`, N-bit counters and F fractional bits.
 pub const fn latency_cycles(counter_bits: u32, frac_bits: u32) -> u32 {
-    // take, N remainder steps, span (EccDelta samples its start), EccMtSpeed's start the
-    // edge after δ, output register.
-    counter_bits
-        + 4
-        + ecc_delta::latency_cycles()
+    // take, SpanDelta's start, δ, EccMtSpeed's start the edge after δ, output register.
+    2 + span_delta::latency_cycles(counter_bits)
+        + 1
         + ecc_mt_speed::latency_cycles(counter_bits, frac_bits)
+        + 1
 }
 
 /// Everything one `start` latches.
@@ -63,34 +61,24 @@ pub struct MtJob {
     pub coef_d: i64,
 }
 
-/// The span of a window in half-steps, increasing position order (module docs).
-pub fn span(lines: u32, job: &MtJob) -> (u64, u64) {
-    let r_rev = u64::from(lines) << job.mode_shift.min(2);
-    let m = job.mt_m % r_rev;
-    let p = job.position;
-    let (lo, hi) = if job.mt_negative {
-        (p, (p + m) % r_rev)
-    } else {
-        ((p + r_rev - m) % r_rev, p)
-    };
-    (2 * lo, 2 * hi)
+/// The span of a window: m steps ending at P, δ from the lower to the upper end (module
+/// docs).
+pub fn span(job: &MtJob) -> SpanRequest {
+    SpanRequest {
+        position: job.position,
+        count: job.mt_m,
+        negative: job.mt_negative,
+        half_end: false,
+        motion_order: false,
+        shift: job.mode_shift,
+        coef_c: job.coef_c,
+        coef_d: job.coef_d,
+    }
 }
 
 /// The corrected speed of `job` (units of 2^−F ω_lim), as the hardware computes it.
 pub fn corrected_speed(lines: u32, table: (u32, u32), format: BaselineFormat, job: &MtJob) -> i64 {
-    let (p_a, p_b) = span(lines, job);
-    let delta = delta_raw(
-        lines,
-        table.0,
-        table.1,
-        &Request {
-            p_a,
-            p_b,
-            shift: job.mode_shift,
-            coef_c: job.coef_c,
-            coef_d: job.coef_d,
-        },
-    );
+    let delta = span_delta(lines, table, &span(job));
     ecc_mt_speed(
         format,
         &EccMtRequest {

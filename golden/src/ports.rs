@@ -68,7 +68,7 @@ pub fn core_ports(p: &Params) -> Vec<Port> {
         o("glitch_count", g, "pulses rejected by the A, B and Z filters since reset, saturating"),
         o("illegal_count", g, "illegal transitions since reset, saturating"),
         o("rev_error_count", g, "revolutions with a wrong count since reset, saturating"),
-        o("speed_position", POSITION_BITS, "with speed_strobe, held: position in the cycle of the update whose nep/ndt the speeds were computed from (the span end for an eccentricity correction); 0 after reset or a reversal"),
+        o("speed_position", POSITION_BITS, "with speed_strobe, held: the end of the span of disc the speeds measure: for nep = 1 the position of the restart pulse that wrote ndt, for nep >= 2 that of the last pulse of the window that wrote nep (which started nep - 1 steps before it); for an eccentricity correction; 0 after reset or a reversal"),
         o("speed_nep", n, "with speed_strobe, held: the nep the speeds were computed from"),
         o("speed_ndt", n, "with speed_strobe, held: the ndt the speeds were computed from"),
         o("mt_strobe", 1, "one cycle: the M/T counter closed a window; mt_m, mt_t, mt_negative were just written and position in this cycle is that of the window's last step; speed_mt follows at baseline_strobe"),

@@ -44,6 +44,7 @@ fn corrected_mt_on_the_rigid_disc() {
         let mut top = EccTopModel::new(&p);
         let r = rps * f64::from(K) * DT as f64 / CLOCK;
         let (mut before, mut after) = (vec![], vec![]);
+        let (mut n3_before, mut n3_after) = (vec![], vec![]);
         let t0 = std::time::Instant::now();
         let mut aligned = false;
         for (k, s) in sampler.enumerate() {
@@ -67,6 +68,12 @@ fn corrected_mt_on_the_rigid_disc() {
             if o.core.baseline_strobe && o.core.speed_mt != 0 {
                 before.push((TAU * rps * t, o.core.speed_mt as f64 / 65536.0 / r - 1.0));
             }
+            if o.core.speed_strobe && o.core.speed_n3 != 0 {
+                n3_before.push((TAU * rps * t, o.core.speed_n3 as f64 / 65536.0 / r - 1.0));
+            }
+            if o.n3c_strobe && o.speed_n3c != 0 {
+                n3_after.push((TAU * rps * t, o.speed_n3c as f64 / 65536.0 / r - 1.0));
+            }
             if o.mtc_strobe && o.speed_mtc != 0 {
                 after.push((TAU * rps * t, o.speed_mtc as f64 / 65536.0 / r - 1.0));
             }
@@ -77,6 +84,20 @@ fn corrected_mt_on_the_rigid_disc() {
         };
         let (b, a) = (take_rev(&before), take_rev(&after));
         let (h_before, h_after) = (once_per_rev(&b), once_per_rev(&a));
+        let (nb, na) = (take_rev(&n3_before), take_rev(&n3_after));
+        let pp = |v: &[(f64, f64)]| {
+            v.iter().map(|x| x.1).fold(f64::NEG_INFINITY, f64::max)
+                - v.iter().map(|x| x.1).fold(f64::INFINITY, f64::min)
+        };
+        println!(
+            "{rpm} rpm n3: {} / {} estimates; 1/rev before {:.1} ppm after {:.1} ppm; p-p {:.1} -> {:.1} ppm",
+            nb.len(),
+            na.len(),
+            once_per_rev(&nb) * 1e6,
+            once_per_rev(&na) * 1e6,
+            pp(&nb) * 1e6,
+            pp(&na) * 1e6
+        );
         // The eccentricity's ripple is there before (about e), and the correction takes
         // more than 1000x of it away: M/T's quantisation is the floor.
         assert!(h_before > 0.9 * e, "{rpm} rpm: 1/rev before {h_before}");

@@ -144,6 +144,11 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     tag_position: DFF<Bits<C>>,
     tag_nep: DFF<Bits<N>>,
     tag_ndt: DFF<Bits<N>>,
+    window_last: DFF<Bits<C>>,
+    restart_pos: DFF<Bits<C>>,
+    position_before: DFF<Bits<C>>,
+    restart_now: Signal<Local, Bits<C>>,
+    window_now: Signal<Local, Bits<C>>,
     scale_n1: ModeScale<S>,
     scale_n2: ModeScale<S>,
     scale_n3: ModeScale<S>,
@@ -252,6 +257,11 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             tag_position: Default::default(),
             tag_nep: Default::default(),
             tag_ndt: Default::default(),
+            window_last: Default::default(),
+            restart_pos: Default::default(),
+            position_before: Default::default(),
+            restart_now: Default::default(),
+            window_now: Default::default(),
             scale_n1: Default::default(),
             scale_n2: Default::default(),
             scale_n3: Default::default(),
@@ -313,7 +323,10 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             mode_reg,
             tag_position,
             tag_nep,
-            tag_ndt
+            tag_ndt,
+            window_last,
+            restart_pos,
+            position_before
         );
 
         // A change of cfg_mode resets the core as `reset` does.
@@ -413,7 +426,30 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         // What each speed was computed from, published with it (`SpeedTag`).
         self.tag.reset.next = self.engine_reset.val();
         self.tag.start.next = self.table1.update.val() & self.table1.primed.val();
-        self.tag.position.next = self.counter.position.val();
+        // Span ends (golden::core::CoreOutputs::speed_position), from registered flags of
+        // Table 1 (reading its combinational ones here would close a combinational loop
+        // through this block): the restart pulse shows in `position` the edge after its
+        // restart; the window's last pulse is `position` before the tick that wrote Nep1
+        // (a pulse on that tick is not in the window), kept one edge in `position_before`.
+        self.position_before.d.next = self.counter.position.val();
+        self.restart_now.next = self.restart_pos.q.val();
+        if self.table1.restarted.val() {
+            self.restart_now.next = self.counter.position.val();
+        }
+        self.window_now.next = self.window_last.q.val();
+        if self.table1.wrote_nep.val() {
+            self.window_now.next = self.position_before.q.val();
+        }
+        self.restart_pos.d.next = self.restart_now.val();
+        self.window_last.d.next = self.window_now.val();
+        if self.engine_reset.val() {
+            self.window_last.d.next = 0.into();
+            self.restart_pos.d.next = 0.into();
+        }
+        self.tag.position.next = self.window_now.val();
+        if self.table1.nep.val() == self.n_one.val() {
+            self.tag.position.next = self.restart_now.val();
+        }
         self.tag.nep.next = self.table1.nep.val();
         self.tag.ndt.next = self.table1.ndt.val();
         if self.tag.valid.val() {

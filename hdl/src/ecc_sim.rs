@@ -65,6 +65,8 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EccSim
             core: core_outputs(&u.core),
             speed_mtc: signed(u.speed_mtc.val().to_u64(), S),
             mtc_strobe: u.mtc_strobe.val(),
+            speed_n3c: signed(u.speed_n3c.val().to_u64(), S),
+            n3c_strobe: u.n3c_strobe.val(),
         }
     }
 

@@ -1,19 +1,24 @@
 //! `encspeed_ecc`: `encspeed_core` with the eccentricity-corrected M/T speed of every
-//! window ([`crate::MtCorrector`]) from runtime coefficients. Bit-true model:
+//! window ([`crate::MtCorrector`]) and n3 of every speed ([`crate::N3Corrector`]) from
+//! runtime coefficients. Bit-true model:
 //! [`golden::ecc_top::EccTopModel`], whose module docs give the timing.
 //!
 //! ```text
 //! enc_a/b/z, cfg_* ─ EncspeedCore ─ every core output (unchanged)
 //!                        │ mt_strobe, mt_m, mt_t, mt_negative, position, dt_active
 //! ecc_c, ecc_d ─────── MtCorrector ─ speed_mtc, mtc_strobe
+//!                        │ speed_strobe, speed_n3, speed_position, speed_nep, speed_ndt
+//!                      N3Corrector ─ speed_n3c, n3c_strobe
 //! ```
 //!
 //! Ports: those of `encspeed_core` (docs/ports.md) and `ecc_c[31:0]`, `ecc_d[31:0]` (c =
 //! E·cos θ0, d = E·sin θ0, two's complement Q15.16 lines, sampled with each window),
-//! `speed_mtc[S-1:0]` (format of `speed_mt`) and `mtc_strobe`.
+//! `speed_mtc[S-1:0]` (format of `speed_mt`) and `mtc_strobe`, `speed_n3c[S-1:0]` (format
+//! of `speed_n3`) and `n3c_strobe`.
 
 use crate::core::EncspeedCore;
 use crate::mt_corrector::MtCorrector;
+use crate::n3_corrector::N3Corrector;
 use golden::params::{Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
 use rust_hdl::prelude::*;
 
@@ -119,8 +124,13 @@ pub struct EncspeedEcc<const N: usize, const P: usize, const S: usize, const CW:
     pub speed_mtc: Signal<Out, Bits<S>>,
     /// One cycle: `speed_mtc` was just written.
     pub mtc_strobe: Signal<Out, Bit>,
+    /// Corrected n3 (format of `speed_n3`), held.
+    pub speed_n3c: Signal<Out, Bits<S>>,
+    /// One cycle: `speed_n3c` was just written.
+    pub n3c_strobe: Signal<Out, Bit>,
     pub(crate) core: EncspeedCore<N, P, S>,
     corrector: MtCorrector<N, 16, S, CW>,
+    n3_corrector: N3Corrector<N, S>,
     mode_reg: DFF<Bits<2>>,
     counts_per_rev: Signal<Local, Bits<C>>,
     shift: Signal<Local, Bits<2>>,
@@ -190,8 +200,11 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EncspeedEc
             ecc_d: Default::default(),
             speed_mtc: Default::default(),
             mtc_strobe: Default::default(),
+            speed_n3c: Default::default(),
+            n3c_strobe: Default::default(),
             core: EncspeedCore::new(p),
             corrector: MtCorrector::new(p.lines()),
+            n3_corrector: N3Corrector::new(p.lines()),
             mode_reg: Default::default(),
             counts_per_rev: Default::default(),
             shift: Default::default(),
@@ -212,7 +225,7 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
 {
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, core, corrector);
+        clock!(self, clock, core, corrector, n3_corrector);
         dff_setup!(self, clock, mode_reg);
         self.core.reset.next = self.reset.val();
         self.core.enc_a.next = self.enc_a.val();
@@ -280,6 +293,19 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         self.corrector.counts_per_rev.next = self.counts_per_rev.val();
         self.corrector.coef_c.next = self.ecc_c.val();
         self.corrector.coef_d.next = self.ecc_d.val();
+        self.n3_corrector.reset.next =
+            self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
+        self.n3_corrector.start.next = self.core.speed_strobe.val();
+        self.n3_corrector.n3.next = self.core.speed_n3.val();
+        self.n3_corrector.position.next = self.core.speed_position.val();
+        self.n3_corrector.nep.next = self.core.speed_nep.val();
+        self.n3_corrector.ndt.next = self.core.speed_ndt.val();
+        self.n3_corrector.shift.next = self.shift.val();
+        self.n3_corrector.counts_per_rev.next = self.counts_per_rev.val();
+        self.n3_corrector.coef_c.next = self.ecc_c.val();
+        self.n3_corrector.coef_d.next = self.ecc_d.val();
+        self.speed_n3c.next = self.n3_corrector.n3c.val();
+        self.n3c_strobe.next = self.n3_corrector.valid.val();
         self.speed_mtc.next = self.corrector.speed_mtc.val();
         self.mtc_strobe.next = self.corrector.valid.val();
     }

@@ -33,12 +33,18 @@ pub struct SyncEstimator<const N: usize> {
     pub update: Signal<Out, Bit>,
     /// Ndt1 has been measured (a restart) since reset: the estimator is primed.
     pub primed: Signal<Out, Bit>,
+    /// The last edge wrote Nep1 (a tick with Cep ≠ 0).
+    pub wrote_nep: Signal<Out, Bit>,
+    /// The last edge was a restart (it wrote Ndt1).
+    pub restarted: Signal<Out, Bit>,
+    wrote_nep_reg: DFF<Bit>,
+    restarted_reg: DFF<Bit>,
+    nep_write: Signal<Local, Bit>,
     pub(crate) cep: DFF<Bits<N>>,
     nep1: DFF<Bits<N>>,
     ndt1: DFF<Bits<N>>,
     update_reg: DFF<Bit>,
     primed_reg: DFF<Bit>,
-    nep_write: Signal<Local, Bit>,
     zero: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
     saturated: Constant<Bits<N>>,
@@ -62,6 +68,10 @@ impl<const N: usize> Default for SyncEstimator<N> {
             ndt1: Default::default(),
             update_reg: Default::default(),
             primed_reg: Default::default(),
+            wrote_nep: Default::default(),
+            restarted: Default::default(),
+            wrote_nep_reg: Default::default(),
+            restarted_reg: Default::default(),
             nep_write: Default::default(),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
@@ -73,7 +83,17 @@ impl<const N: usize> Default for SyncEstimator<N> {
 impl<const N: usize> Logic for SyncEstimator<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, cep, nep1, ndt1, update_reg, primed_reg);
+        dff_setup!(
+            self,
+            clock,
+            cep,
+            nep1,
+            ndt1,
+            update_reg,
+            primed_reg,
+            wrote_nep_reg,
+            restarted_reg
+        );
         self.nep_write.next = self.tick.val() & (self.cep.q.val() != self.zero.val());
         if self.nep_write.val() {
             self.nep1.d.next = self.cep.q.val();
@@ -89,6 +109,8 @@ impl<const N: usize> Logic for SyncEstimator<N> {
             self.cep.d.next = self.zero.val();
         }
         self.update_reg.d.next = self.nep_write.val() | self.restart.val();
+        self.wrote_nep_reg.d.next = self.nep_write.val();
+        self.restarted_reg.d.next = self.restart.val();
         self.primed_reg.d.next = self.primed_reg.q.val() | self.restart.val();
         if self.reset.val() {
             // A pulse in the reset cycle is the first of the new measurement (the core
@@ -102,11 +124,15 @@ impl<const N: usize> Logic for SyncEstimator<N> {
             self.nep1.d.next = self.zero.val();
             self.ndt1.d.next = self.one.val();
             self.update_reg.d.next = false;
+            self.wrote_nep_reg.d.next = false;
+            self.restarted_reg.d.next = false;
         }
         self.nep.next = self.nep1.q.val();
         self.ndt.next = self.ndt1.q.val();
         self.update.next = self.update_reg.q.val();
         self.primed.next = self.primed_reg.q.val();
+        self.wrote_nep.next = self.wrote_nep_reg.q.val();
+        self.restarted.next = self.restarted_reg.q.val();
     }
 }
 

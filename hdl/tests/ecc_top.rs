@@ -1,4 +1,4 @@
-//! `encspeed_ecc` in rust-hdl against its bit-true model (`golden::ecc_top`), cycle for
+//! `encspeed_ecc` (corrected M/T and n3) in rust-hdl against its bit-true model (`golden::ecc_top`), cycle for
 //! cycle, on an eccentric disc driven forward, backward and through reversals, in x1, x2
 //! and x4, with random coefficients and dt short enough that windows queue in the
 //! corrector (the latest wins).
@@ -64,13 +64,14 @@ proptest! {
         let inputs = disc_inputs(initial, &changes, cycles, config);
         let mut model = EccTopModel::new(&p);
         let mut sim = build_ecc(&p).unwrap();
-        let mut strobes = 0;
+        let (mut strobes, mut n3_strobes) = (0, 0);
         for (k, i) in inputs.iter().enumerate() {
             let want = model.step(*i);
             let got = sim.step(i);
             prop_assert_eq!(got, want, "cycle {}", k);
             strobes += usize::from(want.mtc_strobe);
+            n3_strobes += usize::from(want.n3c_strobe);
         }
-        prop_assert!(strobes > 0, "no corrected speed in {} cycles", cycles);
+        prop_assert!(strobes > 0 && n3_strobes > 0, "no corrected speed in {} cycles", cycles);
     }
 }

@@ -43,8 +43,16 @@ pub struct EccStrobe {
     pub speed_mt: Option<i64>,
     /// `speed_mtc` if `mtc_strobe` was high.
     pub speed_mtc: Option<i64>,
+    /// `speed_n3` if `speed_strobe` was high.
+    pub speed_n3: Option<i64>,
+    /// `speed_n3c` if `n3c_strobe` was high.
+    pub speed_n3c: Option<i64>,
     /// `position` in that cycle.
     pub position: u64,
+    /// `speed_nep` in that cycle (what the last n3 was computed from).
+    pub speed_nep: u64,
+    /// `speed_ndt` in that cycle.
+    pub speed_ndt: u64,
 }
 
 /// The configuration of an event-mode run.
@@ -104,13 +112,15 @@ impl EccVerilated {
                 )
             })
             .collect();
-        let rows = stream_harness::stream(&self.exe, text, vcd, 34)?;
+        let rows = stream_harness::stream(&self.exe, text, vcd, 36)?;
         Ok(rows
             .iter()
             .map(|f| EccTopOutputs {
                 core: outputs_of_fields(f, self.speed_bits),
                 speed_mtc: signed(f[32], self.speed_bits),
                 mtc_strobe: f[33] != 0,
+                speed_n3c: signed(f[34], self.speed_bits),
+                n3c_strobe: f[35] != 0,
             })
             .collect())
     }
@@ -157,14 +167,18 @@ impl EccVerilated {
                         .map_err(|e| format!("bad harness output {l:?}: {e}"))
                 })
                 .collect::<Result<_, String>>()?;
-            if f.len() != 6 {
+            if f.len() != 12 {
                 return Err(format!("bad harness output {l:?}"));
             }
             out.push(EccStrobe {
                 cycle: f[0],
                 speed_mt: (f[1] != 0).then(|| signed(f[2], self.speed_bits)),
                 speed_mtc: (f[3] != 0).then(|| signed(f[4], self.speed_bits)),
-                position: f[5],
+                speed_n3: (f[5] != 0).then(|| signed(f[6], self.speed_bits)),
+                speed_n3c: (f[7] != 0).then(|| signed(f[8], self.speed_bits)),
+                position: f[9],
+                speed_nep: f[10],
+                speed_ndt: f[11],
             });
         }
         // The harness stops reading after the last cycle: a closed pipe is not an error.

@@ -4,8 +4,11 @@
 //! - the once-per-revolution ripple of M/T before (`speed_mt`) and after (`speed_mtc`)
 //!   correction on the rigid disc at e = 0.35/30 (K = 1024, θ0 = 50°, 100 MHz, dt = 1 ms,
 //!   x1) at 30, 600 and 6000 r/min, every strobe of the Verilog equal to the model's, and
-//!   each corrected estimate within its quantisation budget. Run with `--nocapture` for the
-//!   figures of docs/eccentricity-hardware.md; the samples go to target/ecc-ripple/.
+//!   each corrected estimate within its quantisation budget;
+//! - the same for n3 (`speed_n3`, `speed_n3c`) against Rairán's bound for the hardware.
+//!
+//! Run with `--nocapture` for the figures of docs/eccentricity-hardware.md; the samples go
+//! to target/ecc-ripple/.
 
 use golden::bittrue::CoreInputs;
 use golden::ecc_delta::coefficients;
@@ -15,6 +18,7 @@ use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
 use golden::params::{Params, Spec};
 use golden::plant::Profile;
+use golden::rairan::n3_error_budget;
 use hdl::ecc_sim::build_ecc;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
@@ -70,13 +74,14 @@ proptest! {
         let inputs = disc_inputs(initial, &changes, cycles, config);
         let mut model = EccTopModel::new(&p);
         let got = verilated(&p).run(&inputs, None).unwrap();
-        let mut strobes = 0;
+        let (mut strobes, mut n3_strobes) = (0, 0);
         for (k, (i, g)) in inputs.iter().zip(&got).enumerate() {
             let want = model.step(*i);
             prop_assert_eq!(*g, want, "cycle {}", k);
             strobes += usize::from(want.mtc_strobe);
+            n3_strobes += usize::from(want.n3c_strobe);
         }
-        prop_assert!(strobes > 0);
+        prop_assert!(strobes > 0 && n3_strobes > 0);
     }
 }
 
@@ -119,7 +124,7 @@ fn corrected_mt_ripple_on_verilog() {
     let dir = tb::target_dir().join("ecc-ripple");
     std::fs::create_dir_all(&dir).unwrap();
     println!("rpm | r (lines/dt) | estimates | before: 1/rev, p-p (ppm) | after: 1/rev, p-p, worst (ppm), worst/budget | 1/rev ratio | cycles");
-    for (rpm, revs) in [(30.0, 1.0), (600.0, 3.0), (6000.0, 20.0)] {
+    for (rpm, revs, dt) in [(30.0, 1.0, DT), (600.0, 3.0, DT), (6000.0, 20.0, DT)] {
         let rps: f64 = rpm / 60.0;
         // Start just before line 0, so that the index aligns the position at once; run
         // the revolutions after it and a little more.
@@ -169,12 +174,16 @@ fn corrected_mt_ripple_on_verilog() {
             if o.core.index && first_index.is_none() {
                 first_index = Some(k);
             }
-            if o.core.baseline_strobe || o.mtc_strobe {
+            if o.core.baseline_strobe || o.mtc_strobe || o.core.speed_strobe || o.n3c_strobe {
                 want.push(EccStrobe {
                     cycle: k,
                     speed_mt: o.core.baseline_strobe.then_some(o.core.speed_mt),
                     speed_mtc: o.mtc_strobe.then_some(o.speed_mtc),
+                    speed_n3: o.core.speed_strobe.then_some(o.core.speed_n3),
+                    speed_n3c: o.n3c_strobe.then_some(o.speed_n3c),
                     position: o.core.position,
+                    speed_nep: o.core.speed_nep,
+                    speed_ndt: o.core.speed_ndt,
                 });
             }
         }
@@ -185,7 +194,7 @@ fn corrected_mt_ripple_on_verilog() {
         // Estimates after the index (the position then counts from line 0), over whole
         // revolutions from the first.
         let first_index = first_index.expect("an index edge");
-        let r = rps * f64::from(K) * DT as f64 / CLOCK;
+        let r = rps * f64::from(K) * dt as f64 / CLOCK;
         let angle = |k: u64| TAU * rps * k as f64 / CLOCK;
         let series = |f: fn(&EccStrobe) -> Option<i64>| -> Vec<(f64, f64)> {
             let v: Vec<(f64, f64)> = got
@@ -204,7 +213,7 @@ fn corrected_mt_ripple_on_verilog() {
         // line period less the eccentricity's 2e) and ½ LSB, plus the first-order residual
         // e³/3 (0.5 ppm) and δ's rounding (< 0.1 ppm).
         let line_period = CLOCK / (rps * f64::from(K));
-        let t_min = (DT as f64 - line_period).max(line_period * (1.0 - 2.0 * e));
+        let t_min = (dt as f64 - line_period).max(line_period * (1.0 - 2.0 * e));
         let budget_ppm = (1.0 / t_min + 0.5 / 65_536.0 / r) * 1e6 + 0.6;
         println!(
             "{rpm:5} | {r:7.3} | {} | {:8.1} {:8.1} | {:6.3} {:6.2} {:6.2} {:.3} | {:.0} | {cycles}",
@@ -217,6 +226,67 @@ fn corrected_mt_ripple_on_verilog() {
             a.worst_ppm / budget_ppm,
             b.h1_ppm / a.h1_ppm
         );
+        // n3: every estimate against Rairán's bound for the hardware (eq. 13 with the
+        // clock's quantisation, rairan::n3_error_budget) at its own n1 = Nep1/Ndt1.
+        let n3_series = |f: fn(&EccStrobe) -> Option<i64>| -> Vec<(f64, f64, f64)> {
+            let v: Vec<(f64, f64, f64)> = got
+                .iter()
+                .filter(|s| s.cycle > first_index)
+                .filter_map(|s| {
+                    f(s).map(|x| {
+                        let n1 = s.speed_nep as f64 / s.speed_ndt.max(1) as f64;
+                        (
+                            angle(s.cycle),
+                            x as f64 / 65_536.0 / r - 1.0,
+                            n3_error_budget(n1, dt),
+                        )
+                    })
+                })
+                .collect();
+            let a0 = v[0].0;
+            v.into_iter().filter(|x| x.0 < a0 + TAU * revs).collect()
+        };
+        let n3b = n3_series(|s| s.speed_n3);
+        let n3a = n3_series(|s| s.speed_n3c);
+        let worst = |v: &[(f64, f64, f64)]| v.iter().map(|x| x.1.abs() / x.2).fold(0.0, f64::max);
+        let two =
+            |v: &[(f64, f64, f64)]| -> Vec<(f64, f64)> { v.iter().map(|x| (x.0, x.1)).collect() };
+        let (fb, fa) = (figures(&two(&n3b)), figures(&two(&n3a)));
+        println!(
+            "n3 {rpm:5} | {r:7.3} | {} | {:8.1} {:8.1} {:.3} | {:8.1} {:8.1} {:.3}",
+            fa.n,
+            fb.h1_ppm,
+            fb.pp_ppm,
+            worst(&n3b),
+            fa.h1_ppm,
+            fa.pp_ppm,
+            worst(&n3a)
+        );
+        // Corrected, n3 is within its bound at every speed. Below r = 1/(2e) (43 lines per
+        // dt here) n3's dead zone hides the eccentricity (no dither: p-p 0) and the
+        // correction puts the true ripple back, inside the bound; above it the eccentricity
+        // breaks the bound, the correction restores it and the 1/rev ripple falls to n3's
+        // quantisation (docs/eccentricity-hardware.md).
+        assert!(
+            worst(&n3a) <= 1.0,
+            "{rpm} rpm: corrected n3 beyond its bound: {}",
+            worst(&n3a)
+        );
+        if r < 0.5 / e {
+            assert_eq!(fb.pp_ppm, 0.0, "{rpm} rpm: n3 dithers in its dead zone");
+            assert!(worst(&n3b) <= 1.0);
+        } else {
+            assert!(
+                worst(&n3b) > 1.0,
+                "{rpm} rpm: the eccentricity should break eq. (13)"
+            );
+            assert!(
+                fb.h1_ppm / fa.h1_ppm > 20.0,
+                "{rpm} rpm: n3 1/rev {} -> {}",
+                fb.h1_ppm,
+                fa.h1_ppm
+            );
+        }
         let csv: String = before
             .iter()
             .zip(&after)

@@ -4,12 +4,13 @@
 //   "reset enc_a enc_b enc_z cfg_dt cfg_timeout cfg_filter cfg_mode cfg_z_mode clear_faults
 //    ecc_c ecc_d"   (ecc_c, ecc_d as unsigned 32-bit port values)
 // applies the inputs, gives one rising edge and prints the core's 32 outputs in the order of
-// harness.cpp, then "speed_mtc mtc_strobe" (raw unsigned port values).
+// harness.cpp, then "speed_mtc mtc_strobe speed_n3c n3c_strobe" (raw unsigned port values).
 //
 // Event mode: "--events CYCLES CFG_DT CFG_MODE CFG_Z_MODE ECC_C ECC_D" reads lines "k a b z"
 // (levels of A, B, Z from cycle k on, k increasing), runs CYCLES cycles (reset for the first
-// 3) and prints one line per cycle in which baseline_strobe or mtc_strobe is high:
-//   "cycle baseline_strobe speed_mt mtc_strobe speed_mtc position"
+// 3) and prints one line per cycle in which a speed strobe is high:
+//   "cycle baseline_strobe speed_mt mtc_strobe speed_mtc speed_strobe speed_n3 n3c_strobe
+//    speed_n3c position speed_nep speed_ndt"
 // (the form of a long run: a revolution at 30 r/min is 2e8 cycles at 100 MHz).
 //
 // Optional "--vcd PATH" (stream mode) writes a VCD of every signal.
@@ -59,10 +60,12 @@ static int events(Vencspeed_ecc& top, char** a) {
         }
         top.reset = k < 3;
         edge(top);
-        if (top.baseline_strobe || top.mtc_strobe) {
-            printf("%llu %u %llu %u %llu %llu\n", k, (unsigned)top.baseline_strobe,
-                   (u)top.speed_mt, (unsigned)top.mtc_strobe, (u)top.speed_mtc,
-                   (u)top.position);
+        if (top.baseline_strobe || top.mtc_strobe || top.speed_strobe || top.n3c_strobe) {
+            printf("%llu %u %llu %u %llu %u %llu %u %llu %llu %llu %llu\n", k,
+                   (unsigned)top.baseline_strobe, (u)top.speed_mt, (unsigned)top.mtc_strobe,
+                   (u)top.speed_mtc, (unsigned)top.speed_strobe, (u)top.speed_n3,
+                   (unsigned)top.n3c_strobe, (u)top.speed_n3c, (u)top.position,
+                   (u)top.speed_nep, (u)top.speed_ndt);
         }
     }
     return 0;
@@ -136,7 +139,7 @@ int main(int argc, char** argv) {
         if (tfp) tfp->dump((uint64_t)(cycle * 10 + 10));
 #endif
         printf("%llu %llu %u %u %llu %llu %u %llu %llu %llu %u %llu %llu %llu %u %u %u %u %u %u %u "
-               "%u %u %u %llu %llu %llu %u %llu %llu %u %llu %llu %u\n",
+               "%u %u %u %llu %llu %llu %u %llu %llu %u %llu %llu %u %llu %u\n",
                (u)top.position, (u)top.z_latch, (unsigned)top.index, (unsigned)top.direction,
                (u)top.nep, (u)top.ndt, (unsigned)top.update, (u)top.speed_n1, (u)top.speed_n2,
                (u)top.speed_n3, (unsigned)top.speed_strobe, (u)top.speed_pc, (u)top.speed_et,
@@ -146,7 +149,8 @@ int main(int argc, char** argv) {
                (unsigned)top.illegal_count, (unsigned)top.rev_error_count,
                (u)top.speed_position, (u)top.speed_nep, (u)top.speed_ndt,
                (unsigned)top.mt_strobe, (u)top.mt_m, (u)top.mt_t, (unsigned)top.mt_negative,
-               (u)top.dt_active, (u)top.speed_mtc, (unsigned)top.mtc_strobe);
+               (u)top.dt_active, (u)top.speed_mtc, (unsigned)top.mtc_strobe,
+               (u)top.speed_n3c, (unsigned)top.n3c_strobe);
         ++cycle;
     }
 #if VM_TRACE
