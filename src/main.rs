@@ -24,7 +24,9 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Cmd {
-    /// Emit encspeed_core.v and its manifest encspeed_core.toml.
+    /// Emit encspeed_core.v and its manifest encspeed_core.toml, encspeed_ecc.v (the core
+    /// with the eccentricity-corrected speeds; for a multiple of 4 lines), encspeed_wb.v and
+    /// encspeed_regs.h.
     Generate {
         #[command(flatten)]
         spec: SpecArgs,
@@ -74,6 +76,10 @@ enum Cmd {
         /// Package, e.g. ct256 (hx8k), sg48 (up5k).
         #[arg(long, default_value = "ct256")]
         package: String,
+        /// wb: encspeed_wb, synthesised, placed and routed; ecc: encspeed_ecc, synthesised
+        /// only (cells by type: its ports outnumber any iCE40's pins).
+        #[arg(long, default_value = "wb", value_parser = ["wb", "ecc"])]
+        top: String,
     },
     /// Measured and model gain/phase of a speed estimator (CSV, SVG).
     ///
@@ -170,6 +176,39 @@ enum Cmd {
     /// the harmonic fit (recommended; also with a 2nd harmonic), the mean speed and the
     /// corrector coefficients. See docs/eccentricity.md.
     Identify(identify::IdentifyArgs),
+    /// Once-per-revolution ripple of M/T and n3 before and after the eccentricity correction,
+    /// measured on the emitted encspeed_ecc.v in Verilator (Zhao's Figs. 6 and 7).
+    ///
+    /// A rigid disc whose centre is --delta-r-mm off the shaft, read at a constant speed,
+    /// x1, cfg_z_mode = 1 (the position counts from line 0), the coefficients of that disc on
+    /// ecc_c/ecc_d. Prints the 1/rev amplitude, peak to peak and worst error against its
+    /// budget; writes the figure (speeds in r/min over the shaft angle) to --svg and the M/T
+    /// samples to --csv. See docs/eccentricity-hardware.md.
+    EccRipple {
+        #[command(flatten)]
+        spec: SpecArgs,
+        /// Shaft speed, r/min (> 0).
+        #[arg(long, default_value_t = 600.0)]
+        rpm: f64,
+        /// Whole revolutions measured after the first index.
+        #[arg(long, default_value_t = 3.0)]
+        revs: f64,
+        /// Offset of the disc centre from the shaft, mm.
+        #[arg(long, default_value_t = 0.35)]
+        delta_r_mm: f64,
+        /// Radius of the disc's track, mm.
+        #[arg(long, default_value_t = 30.0)]
+        radius_mm: f64,
+        /// Angle of the offset, degrees.
+        #[arg(long, default_value_t = 50.0, allow_negative_numbers = true)]
+        theta0_deg: f64,
+        /// Draw the figure (SVG) here.
+        #[arg(long, default_value = "target/ecc-ripple/ripple.svg")]
+        svg: PathBuf,
+        /// Write every sample (series, angle_rad, error_ppm) here.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
 }
 
 /// Generation parameters, shared by every subcommand that builds the core: the defaults
@@ -475,7 +514,14 @@ fn main() -> ExitCode {
             spec,
             device,
             package,
-        } => spec.run(|p| synth(p, &device, &package)),
+            top,
+        } => spec.run(|p| {
+            if top == "ecc" {
+                synth_ecc(p)
+            } else {
+                synth(p, &device, &package)
+            }
+        }),
         Cmd::Bode {
             estimator,
             source,
@@ -532,6 +578,30 @@ fn main() -> ExitCode {
             threads,
         } => accuracy(points, &mode, &svg, threads),
         Cmd::Identify(args) => identify::run(&args),
+        Cmd::EccRipple {
+            spec,
+            rpm,
+            revs,
+            delta_r_mm,
+            radius_mm,
+            theta0_deg,
+            svg,
+            csv,
+        } => spec.run(|p| {
+            if !(rpm > 0.0 && rpm.is_finite() && revs >= 1.0 && revs.is_finite()) {
+                return Err((2, "ecc-ripple: --rpm must be > 0 and --revs >= 1".into()));
+            }
+            if !(radius_mm > 0.0 && (0.0..radius_mm).contains(&delta_r_mm)) {
+                return Err((2, "ecc-ripple: need 0 <= --delta-r-mm < --radius-mm".into()));
+            }
+            let setup = tb::ecc_ripple::RippleSetup {
+                rpm,
+                revs,
+                e: delta_r_mm / radius_mm,
+                theta0: theta0_deg.to_radians(),
+            };
+            ecc_ripple(p, setup, &svg, csv.as_deref())
+        }),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -553,14 +623,70 @@ fn generate(p: &Params, out: &Path) -> Outcome {
     for (name, text) in hdl::emit_wb::emit_wb(p) {
         write(name, &text)?;
     }
+    // The eccentricity-corrected top needs a multiple of 4 lines; the core does not, so a
+    // refusal is reported and the rest is written.
+    let ecc = match hdl::emit_ecc(p) {
+        Ok(v) => {
+            write("encspeed_ecc.v", &v)?;
+            format!(", {}", out.join("encspeed_ecc.v").display())
+        }
+        Err(e) => {
+            eprintln!("encspeed_ecc.v not written: {e}");
+            String::new()
+        }
+    };
     println!(
-        "wrote {} and {}, the Wishbone top and the C header ({}-bit counters, dt = {} cycles, ω_lim = {} rev/s)",
+        "wrote {}, {}{ecc}, the Wishbone top and the C header ({}-bit counters, dt = {} cycles, ω_lim = {} rev/s)",
         out.join("encspeed_core.v").display(),
         out.join("encspeed_core.toml").display(),
         p.counter_bits(),
         p.dt_cycles(),
         p.omega_lim_rps()
     );
+    Ok(())
+}
+
+/// The ripple of `setup` on the emitted `encspeed_ecc.v` for `p`, in Verilator.
+fn ecc_ripple(
+    p: &Params,
+    setup: tb::ecc_ripple::RippleSetup,
+    svg: &Path,
+    csv: Option<&Path>,
+) -> Outcome {
+    use tb::ecc_ripple::{draw_svg, run_verilog, Ripple};
+    let verilog = hdl::emit_ecc(p).map_err(|e| (2, e))?;
+    let sim =
+        tb::ecc_verilator::EccVerilated::build(&verilog, p.speed_bits()).map_err(|e| (1, e))?;
+    let (strobes, stim) = run_verilog(&sim, p, &setup).map_err(|e| (1, e))?;
+    let ripple = Ripple::new(p, setup, &strobes, stim.aligned_after);
+    if ripple.mt_before.is_empty() || ripple.n3_before.is_empty() {
+        return Err((
+            1,
+            "ecc-ripple: no estimates after the index (too slow for dt?)".into(),
+        ));
+    }
+    println!(
+        "encspeed_ecc.v in Verilator, e = {:.6}, theta0 = {:.2} deg, {} cycles\n{}",
+        setup.e,
+        setup.theta0.to_degrees(),
+        stim.cycles,
+        ripple.summary()
+    );
+    let title = format!(
+        "encspeed_ecc.v in Verilator: {} r/min, e = {:.5}, θ0 = {:.0}°, K = {}, dt = {} ms, x1",
+        setup.rpm,
+        setup.e,
+        setup.theta0.to_degrees(),
+        p.lines(),
+        p.dt_s() * 1e3
+    );
+    draw_svg(svg, &title, &ripple).map_err(|e| (1, e))?;
+    eprintln!("wrote {}", svg.display());
+    if let Some(path) = csv {
+        std::fs::write(path, ripple.csv())
+            .map_err(|e| (1, format!("cannot write {}: {e}", path.display())))?;
+        eprintln!("wrote {}", path.display());
+    }
     Ok(())
 }
 
@@ -687,6 +813,44 @@ fn bench(p: &Params, cycles: u64) -> Outcome {
         "Verilator -O3 (emitted .v)   {:>12.0} cycles/s ({cycles} cycles)",
         verilator_rate
     );
+    Ok(())
+}
+
+/// yosys `synth_ice40` of `encspeed_ecc` for `p`: the cells by type.
+fn synth_ecc(p: &Params) -> Outcome {
+    let dir = tb::target_dir().join("synth-ecc");
+    std::fs::create_dir_all(&dir).map_err(|e| (1, e.to_string()))?;
+    let verilog = hdl::emit_ecc(p).map_err(|e| (2, e))?;
+    std::fs::write(dir.join("encspeed_ecc.v"), verilog).map_err(|e| (1, e.to_string()))?;
+    let _ = std::fs::remove_file(dir.join("stat.txt"));
+    tb::run_tool(
+        std::process::Command::new("yosys").current_dir(&dir).args([
+            "-q",
+            "-p",
+            "read_verilog encspeed_ecc.v; synth_ice40 -top encspeed_ecc; tee -q -o stat.txt stat",
+        ]),
+        "yosys",
+    )
+    .map_err(|e| (1, e))?;
+    let stat = std::fs::read_to_string(dir.join("stat.txt")).map_err(|e| (1, e.to_string()))?;
+    println!(
+        "encspeed_ecc, yosys synth_ice40, {}-bit counters, K = {}:",
+        p.counter_bits(),
+        p.lines()
+    );
+    let mut flip_flops = 0u64;
+    for l in stat.lines().map(str::trim) {
+        let mut it = l.split_whitespace();
+        if let (Some(cell), Some(n)) = (it.next(), it.next().and_then(|n| n.parse::<u64>().ok())) {
+            if cell.starts_with("SB_") {
+                println!("  {cell:<14} {n}");
+                if cell.starts_with("SB_DFF") {
+                    flip_flops += n;
+                }
+            }
+        }
+    }
+    println!("  flip-flops     {flip_flops}");
     Ok(())
 }
 

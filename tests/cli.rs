@@ -30,6 +30,7 @@ fn generate_with_defaults_reproduces_generated_dir() {
     for f in [
         "encspeed_core.v",
         "encspeed_core.toml",
+        "encspeed_ecc.v",
         "encspeed_wb.v",
         "encspeed_regs.h",
     ] {
@@ -40,6 +41,71 @@ fn generate_with_defaults_reproduces_generated_dir() {
         )
         .unwrap();
         assert_eq!(std::fs::read(out.join(f)).unwrap(), shipped, "{f}");
+    }
+}
+
+#[test]
+fn generate_for_lines_not_a_multiple_of_4_writes_the_core_and_says_why_not_the_ecc_top() {
+    let out = scratch("generate-1000");
+    let o = encspeed(&[
+        "generate",
+        "--lines",
+        "1001",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(out.join("encspeed_core.v").exists());
+    assert!(!out.join("encspeed_ecc.v").exists());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("encspeed_ecc.v not written") && err.contains("multiple of 4"),
+        "{err}"
+    );
+}
+
+/// Five revolutions at 6000 r/min (10 M/T windows each) on encspeed_ecc.v in Verilator: before
+/// correction the once-per-revolution ripple is the eccentricity e = 0.35/30 = 11 667 ppm
+/// (by hand), after it below 10 ppm; bad arguments exit 2.
+#[test]
+fn ecc_ripple_prints_the_ripple_and_writes_the_figure() {
+    let out = scratch("ecc-ripple");
+    let svg = out.join("r.svg");
+    let csv = out.join("r.csv");
+    let o = encspeed(&[
+        "ecc-ripple",
+        "--rpm",
+        "6000",
+        "--revs",
+        "5",
+        "--svg",
+        svg.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let line = text.lines().find(|l| l.starts_with("M/T:")).expect(&text);
+    let number_after = |key: &str| -> f64 {
+        let rest = &line[line.find(key).expect(line) + key.len()..];
+        rest.split_whitespace().next().unwrap().parse().unwrap()
+    };
+    let before = number_after("1/rev ");
+    let after = number_after("-> ");
+    assert!((before / 11_667.0 - 1.0).abs() < 0.03, "{line}");
+    assert!(after < 10.0, "{line}");
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+    assert!(std::fs::read_to_string(&csv)
+        .unwrap()
+        .starts_with("series,angle_rad,error_ppm\nmt,"));
+    for bad in [
+        &["ecc-ripple", "--rpm", "0"][..],
+        &["ecc-ripple", "--revs", "0.5"],
+        &["ecc-ripple", "--delta-r-mm", "40"],
+        &["ecc-ripple", "--lines", "1001"],
+    ] {
+        let o = encspeed(bad);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}");
     }
 }
 

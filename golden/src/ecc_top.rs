@@ -122,29 +122,28 @@ impl EccTopModel {
     }
 }
 
-/// Per-cycle inputs of a run on an eccentric disc: the levels of `changes` (from
-/// [`crate::eccentric::motion::EccentricDisc::clock_changes`]) for `cycles` cycles, reset
-/// for the first 3, `core` giving the configuration and the coefficients held throughout.
+/// Per-cycle inputs of a run on an eccentric disc, one per cycle: the levels of `changes`
+/// (from [`crate::eccentric::motion::EccentricDisc::clock_changes`]) for `cycles` cycles,
+/// reset for the first 3, `config` giving the configuration and the coefficients held
+/// throughout. An iterator, so that runs of 10^8 cycles need no storage.
 pub fn disc_inputs(
     initial: crate::plant::Sample,
     changes: &[(u64, crate::plant::Sample)],
     cycles: u64,
     config: EccTopInputs,
-) -> Vec<EccTopInputs> {
+) -> impl Iterator<Item = EccTopInputs> + '_ {
     let mut levels = initial;
     let mut next = 0;
-    (0..cycles)
-        .map(|k| {
-            while next < changes.len() && changes[next].0 <= k {
-                levels = changes[next].1;
-                next += 1;
-            }
-            let mut i = config;
-            i.core.reset = k < 3;
-            i.core.enc_a = levels.a;
-            i.core.enc_b = levels.b;
-            i.core.enc_z = levels.z;
-            i
-        })
-        .collect()
+    (0..cycles).map(move |k| {
+        while next < changes.len() && changes[next].0 <= k {
+            levels = changes[next].1;
+            next += 1;
+        }
+        let mut i = config;
+        i.core.reset = k < 3;
+        i.core.enc_a = levels.a;
+        i.core.enc_b = levels.b;
+        i.core.enc_z = levels.z;
+        i
+    })
 }

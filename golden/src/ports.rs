@@ -79,6 +79,28 @@ pub fn core_ports(p: &Params) -> Vec<Port> {
     ]
 }
 
+/// Every port of `encspeed_ecc` for `p`: those of `encspeed_core`, then the coefficients
+/// and the corrected speeds (`crate::ecc_top`).
+pub fn ecc_ports(p: &Params) -> Vec<Port> {
+    let s = p.speed_bits();
+    let mut v = core_ports(p);
+    let port = |name, direction, width, description| Port {
+        name,
+        direction,
+        width,
+        description,
+    };
+    v.extend([
+        port("ecc_c", "input", 32, "eccentricity coefficient c = E cos(theta0), two's complement Q15.16 in lines (E = lines * e / 2pi, e = disc centre offset / disc radius); read when a job starts, so it may change at any time"),
+        port("ecc_d", "input", 32, "eccentricity coefficient d = E sin(theta0), Q15.16 lines"),
+        port("speed_mtc", "output", s, "M/T speed of each window corrected for the eccentricity; format as speed_mt; needs cfg_z_mode = 1 or 3 (position counted from line 0)"),
+        port("mtc_strobe", "output", 1, "one cycle: speed_mtc has just been written"),
+        port("speed_n3c", "output", s, "Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3"),
+        port("n3c_strobe", "output", 1, "one cycle: speed_n3c has just been written"),
+    ]);
+    v
+}
+
 /// Latencies of `encspeed_core` in clock edges, for a filter length `cfg_filter`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Latency {

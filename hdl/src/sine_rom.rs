@@ -5,13 +5,13 @@
 //!
 //! Per clock edge (A = address width, D = data width): address = (m + m0) mod K by
 //! compare-and-subtract in A bits (wrap when m0 > K − 1 − m, then subtract K), read into the
-//! registered output `data` (D-bit two's complement) by rust-hdl's `SyncROM`: one cycle of
-//! latency, no reset. K (2 ≤ K ≤ 2^A) is a constructor argument; entries K..2^A are 0.
+//! registered output `data` (D-bit two's complement) by [`crate::table_rom::TableRom`], a ROM
+//! of exactly K words (an address ≥ K reads 0): one cycle of latency, no reset. K (2 ≤ K ≤ 2^A) is a constructor
+//! argument.
 //!
 //! Ports: `clock`, `m[A-1:0]`, `m0[A-1:0]`; registered output `data[D-1:0]`.
 
 use rust_hdl::prelude::*;
-use std::collections::BTreeMap;
 
 /// Sine ROM with A-bit address and D-bit signed entries.
 #[derive(LogicBlock)]
@@ -24,7 +24,7 @@ pub struct SineRom<const A: usize, const D: usize> {
     pub m0: Signal<In, Bits<A>>,
     /// sin(2π((m + m0) mod K)/K)·(2^(D−1) − 1), rounded, two's complement; one cycle late.
     pub data: Signal<Out, Bits<D>>,
-    rom: SyncROM<Bits<D>, A>,
+    rom: crate::table_rom::TableRom<D, A>,
     limit: Signal<Local, Bits<A>>,
     sum: Signal<Local, Bits<A>>,
     k_minus_one: Constant<Bits<A>>,
@@ -35,19 +35,15 @@ impl<const A: usize, const D: usize> SineRom<A, D> {
     /// A table of K = `lines` entries (2 ≤ K ≤ 2^A; 1 ≤ A ≤ 16, 2 ≤ D ≤ 32).
     pub fn new(lines: u32) -> Self {
         let table = golden::sine_rom::sine_table(lines, A as u32, D as u32);
-        let mask = (1u64 << D) - 1;
-        let map: BTreeMap<Bits<A>, Bits<D>> = table
-            .iter()
-            .enumerate()
-            .map(|(i, &v)| ((i as u64).into(), ((v as u64) & mask).into()))
-            .collect();
+        // The K words; entries K..2^A of the model's table are never addressed.
+        let words: Vec<u64> = table[..lines as usize].iter().map(|&v| v as u64).collect();
         let amask = (1u64 << A) - 1;
         Self {
             clock: Default::default(),
             m: Default::default(),
             m0: Default::default(),
             data: Default::default(),
-            rom: SyncROM::new(map),
+            rom: crate::table_rom::TableRom::new(&words),
             limit: Default::default(),
             sum: Default::default(),
             k_minus_one: Constant::new((u64::from(lines) - 1).into()),

@@ -61,7 +61,7 @@ proptest! {
             ecc_c: c,
             ecc_d: d,
         };
-        let inputs = disc_inputs(initial, &changes, cycles, config);
+        let inputs: Vec<EccTopInputs> = disc_inputs(initial, &changes, cycles, config).collect();
         let mut model = EccTopModel::new(&p);
         let mut sim = build_ecc(&p).unwrap();
         let (mut strobes, mut n3_strobes) = (0, 0);

@@ -7,6 +7,7 @@
 pub mod accuracy;
 pub mod adversarial;
 pub mod cosim;
+pub mod ecc_ripple;
 pub mod ecc_verilator;
 pub mod freqresp;
 pub mod icarus;

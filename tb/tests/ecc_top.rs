@@ -2,27 +2,27 @@
 //! - cycle for cycle against its bit-true model (`golden::ecc_top`) on eccentric discs in
 //!   x1/x2/x4, forward, backward and through reversals, random and realistic coefficients;
 //! - the once-per-revolution ripple of M/T before (`speed_mt`) and after (`speed_mtc`)
-//!   correction on the rigid disc at e = 0.35/30 (K = 1024, θ0 = 50°, 100 MHz, dt = 1 ms,
-//!   x1) at 30, 600 and 6000 r/min, every strobe of the Verilog equal to the model's, and
-//!   each corrected estimate within its quantisation budget;
+//!   correction, on the shipped `generated/encspeed_ecc.v`, with the rigid disc at
+//!   e = 0.35/30 (K = 1024, θ0 = 50°, 100 MHz, dt = 1 ms, x1) at 30, 600 and 6000 r/min,
+//!   every strobe of the Verilog equal to the model's, and each corrected estimate within
+//!   its quantisation budget ([`tb::ecc_ripple`]);
 //! - the same for n3 (`speed_n3`, `speed_n3c`) against Rairán's bound for the hardware.
 //!
 //! Run with `--nocapture` for the figures of docs/eccentricity-hardware.md; the samples go
-//! to target/ecc-ripple/.
+//! to target/ecc-ripple/ (CSV and SVG).
 
 use golden::bittrue::CoreInputs;
 use golden::ecc_delta::coefficients;
 use golden::ecc_top::{disc_inputs, EccTopInputs, EccTopModel};
-use golden::eccentric::correct::once_per_rev;
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
 use golden::params::{Params, Spec};
 use golden::plant::Profile;
-use golden::rairan::n3_error_budget;
 use hdl::ecc_sim::build_ecc;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
-use tb::ecc_verilator::{EccStrobe, EccVerilated, EventRun};
+use tb::ecc_ripple::{draw_svg, figures, run_verilog, Ripple, RippleSetup};
+use tb::ecc_verilator::{EccStrobe, EccVerilated};
 
 fn small(lines: u32) -> Params {
     Params::new(Spec {
@@ -71,7 +71,7 @@ proptest! {
             ecc_c: c,
             ecc_d: d,
         };
-        let inputs = disc_inputs(initial, &changes, cycles, config);
+        let inputs: Vec<EccTopInputs> = disc_inputs(initial, &changes, cycles, config).collect();
         let mut model = EccTopModel::new(&p);
         let got = verilated(&p).run(&inputs, None).unwrap();
         let (mut strobes, mut n3_strobes) = (0, 0);
@@ -85,68 +85,29 @@ proptest! {
     }
 }
 
-const K: u32 = 1024;
-const CLOCK: f64 = 100e6;
-const DT: u64 = 100_000;
-
-/// Ripple figures of (shaft angle, relative error) samples over whole revolutions.
-struct Figures {
-    n: usize,
-    h1_ppm: f64,
-    pp_ppm: f64,
-    worst_ppm: f64,
-}
-
-fn figures(v: &[(f64, f64)]) -> Figures {
-    let max = v.iter().map(|x| x.1).fold(f64::NEG_INFINITY, f64::max);
-    let min = v.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
-    Figures {
-        n: v.len(),
-        h1_ppm: once_per_rev(v) * 1e6,
-        pp_ppm: (max - min) * 1e6,
-        worst_ppm: max.abs().max(min.abs()) * 1e6,
-    }
-}
-
+/// The rigid disc at e = 0.35/30, θ0 = 50°, on the shipped `generated/encspeed_ecc.v`
+/// (the default parameters: 100 MHz, K = 1024, dt = 1 ms, N = 24).
 #[test]
-fn corrected_mt_ripple_on_verilog() {
-    let p = Params::new(Spec {
-        clock_hz: CLOCK,
-        lines: K,
-        dt_cycles: DT,
-        counter_bits: 24,
-        ..Default::default()
-    })
-    .unwrap();
-    let (e, theta0) = (0.35 / 30.0, 50f64.to_radians());
-    let (c, d) = coefficients(K, e, theta0);
-    let sim = verilated(&p);
+fn corrected_ripple_on_verilog() {
+    let p = Params::new(Spec::default()).unwrap();
+    let shipped = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/encspeed_ecc.v"),
+    )
+    .expect("generated/encspeed_ecc.v");
+    let sim = EccVerilated::build(&shipped, p.speed_bits()).unwrap();
     let dir = tb::target_dir().join("ecc-ripple");
     std::fs::create_dir_all(&dir).unwrap();
-    println!("rpm | r (lines/dt) | estimates | before: 1/rev, p-p (ppm) | after: 1/rev, p-p, worst (ppm), worst/budget | 1/rev ratio | cycles");
-    for (rpm, revs, dt) in [(30.0, 1.0, DT), (600.0, 3.0, DT), (6000.0, 20.0, DT)] {
-        let rps: f64 = rpm / 60.0;
-        // Start just before line 0, so that the index aligns the position at once; run
-        // the revolutions after it and a little more.
-        let duration = (revs + 0.03) / rps;
-        let profile = Profile::constant(rps, duration)
-            .unwrap()
-            .with_initial_angle(-0.01)
-            .unwrap();
-        let disc =
-            EccentricDisc::new(K, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
-        let (initial, changes) = disc.clock_changes(&profile, CLOCK);
-        let cycles = (duration * CLOCK) as u64;
-        let run = EventRun {
-            cycles,
-            cfg_dt: 0,
-            cfg_mode: 0,
-            cfg_z_mode: 1,
-            ecc_c: c,
-            ecc_d: d,
+    for (rpm, revs) in [(30.0, 1.0), (600.0, 3.0), (6000.0, 20.0)] {
+        let e = 0.35 / 30.0;
+        let setup = RippleSetup {
+            rpm,
+            revs,
+            e,
+            theta0: 50f64.to_radians(),
         };
-        let got = sim.run_events(&run, initial, &changes).unwrap();
+        let (got, stim) = run_verilog(&sim, &p, &setup).unwrap();
         // The model, cycle by cycle, the same strobes.
+        let (c, d) = setup.coefficients(&p);
         let config = EccTopInputs {
             core: CoreInputs {
                 cfg_z_mode: 1,
@@ -157,19 +118,9 @@ fn corrected_mt_ripple_on_verilog() {
         };
         let mut model = EccTopModel::new(&p);
         let mut want = Vec::new();
-        let mut levels = initial;
-        let mut next = 0;
         let mut first_index = None;
-        for k in 0..cycles {
-            while next < changes.len() && changes[next].0 <= k {
-                levels = changes[next].1;
-                next += 1;
-            }
-            let mut i = config;
-            i.core.reset = k < 3;
-            i.core.enc_a = levels.a;
-            i.core.enc_b = levels.b;
-            i.core.enc_z = levels.z;
+        for (k, i) in disc_inputs(stim.initial, &stim.changes, stim.cycles, config).enumerate() {
+            let k = k as u64;
             let o = model.step(i);
             if o.core.index && first_index.is_none() {
                 first_index = Some(k);
@@ -191,93 +142,62 @@ fn corrected_mt_ripple_on_verilog() {
         for (g, w) in got.iter().zip(&want) {
             assert_eq!(g, w, "{rpm} rpm: Verilog and model differ");
         }
-        // Estimates after the index (the position then counts from line 0), over whole
-        // revolutions from the first.
-        let first_index = first_index.expect("an index edge");
-        let r = rps * f64::from(K) * dt as f64 / CLOCK;
-        let angle = |k: u64| TAU * rps * k as f64 / CLOCK;
-        let series = |f: fn(&EccStrobe) -> Option<i64>| -> Vec<(f64, f64)> {
-            let v: Vec<(f64, f64)> = got
-                .iter()
-                .filter(|s| s.cycle > first_index)
-                .filter_map(|s| f(s).map(|x| (angle(s.cycle), x as f64 / 65_536.0 / r - 1.0)))
-                .filter(|x| x.1 > -0.5)
-                .collect();
-            let a0 = v[0].0;
-            v.into_iter().filter(|x| x.0 < a0 + TAU * revs).collect()
-        };
-        let before = series(|s| s.speed_mt);
-        let after = series(|s| s.speed_mtc);
-        let (b, a) = (figures(&before), figures(&after));
-        // Budget of one estimate: M/T's 1/T̂ (T̂ ≥ dt − one line period, and at least one
-        // line period less the eccentricity's 2e) and ½ LSB, plus the first-order residual
-        // e³/3 (0.5 ppm) and δ's rounding (< 0.1 ppm).
-        let line_period = CLOCK / (rps * f64::from(K));
-        let t_min = (dt as f64 - line_period).max(line_period * (1.0 - 2.0 * e));
-        let budget_ppm = (1.0 / t_min + 0.5 / 65_536.0 / r) * 1e6 + 0.6;
-        println!(
-            "{rpm:5} | {r:7.3} | {} | {:8.1} {:8.1} | {:6.3} {:6.2} {:6.2} {:.3} | {:.0} | {cycles}",
-            a.n,
-            b.h1_ppm,
-            b.pp_ppm,
-            a.h1_ppm,
-            a.pp_ppm,
+        // The estimates kept count from line 0: the index was processed by then.
+        assert!(
+            first_index.expect("an index edge") <= stim.aligned_after,
+            "{rpm} rpm: index at {first_index:?}, after {}",
+            stim.aligned_after
+        );
+        let ripple = Ripple::new(&p, setup, &got, stim.aligned_after);
+        println!("{}", ripple.summary());
+        std::fs::write(dir.join(format!("rpm{rpm}.csv")), ripple.csv()).unwrap();
+        draw_svg(
+            &dir.join(format!("rpm{rpm}.svg")),
+            &format!("encspeed_ecc.v in Verilator, {rpm} r/min"),
+            &ripple,
+        )
+        .unwrap();
+        let (b, a) = (figures(&ripple.mt_before), figures(&ripple.mt_after));
+        assert!(
+            b.h1_ppm > 0.9 * e * 1e6,
+            "{rpm} rpm: 1/rev before {}",
+            b.h1_ppm
+        );
+        assert!(
+            a.worst_ppm <= ripple.mt_budget_ppm,
+            "{rpm} rpm: worst {} ppm, budget {}",
             a.worst_ppm,
-            a.worst_ppm / budget_ppm,
+            ripple.mt_budget_ppm
+        );
+        assert!(
+            b.h1_ppm / a.h1_ppm > 1000.0,
+            "{rpm} rpm: ratio {}",
             b.h1_ppm / a.h1_ppm
         );
-        // n3: every estimate against Rairán's bound for the hardware (eq. 13 with the
-        // clock's quantisation, rairan::n3_error_budget) at its own n1 = Nep1/Ndt1.
-        let n3_series = |f: fn(&EccStrobe) -> Option<i64>| -> Vec<(f64, f64, f64)> {
-            let v: Vec<(f64, f64, f64)> = got
-                .iter()
-                .filter(|s| s.cycle > first_index)
-                .filter_map(|s| {
-                    f(s).map(|x| {
-                        let n1 = s.speed_nep as f64 / s.speed_ndt.max(1) as f64;
-                        (
-                            angle(s.cycle),
-                            x as f64 / 65_536.0 / r - 1.0,
-                            n3_error_budget(n1, dt),
-                        )
-                    })
-                })
-                .collect();
-            let a0 = v[0].0;
-            v.into_iter().filter(|x| x.0 < a0 + TAU * revs).collect()
-        };
-        let n3b = n3_series(|s| s.speed_n3);
-        let n3a = n3_series(|s| s.speed_n3c);
-        let worst = |v: &[(f64, f64, f64)]| v.iter().map(|x| x.1.abs() / x.2).fold(0.0, f64::max);
-        let two =
-            |v: &[(f64, f64, f64)]| -> Vec<(f64, f64)> { v.iter().map(|x| (x.0, x.1)).collect() };
-        let (fb, fa) = (figures(&two(&n3b)), figures(&two(&n3a)));
-        println!(
-            "n3 {rpm:5} | {r:7.3} | {} | {:8.1} {:8.1} {:.3} | {:8.1} {:8.1} {:.3}",
-            fa.n,
-            fb.h1_ppm,
-            fb.pp_ppm,
-            worst(&n3b),
-            fa.h1_ppm,
-            fa.pp_ppm,
-            worst(&n3a)
+        // n3 against Rairán's bound for the hardware (eq. 13 with the clock's quantisation)
+        // at each estimate's n1. Corrected, n3 is within its bound at every speed. Below
+        // r = 1/(2e) (43 lines per dt here) n3's dead zone hides the eccentricity (no
+        // dither: p-p 0) and the correction puts the true ripple back, inside the bound;
+        // above it the eccentricity breaks the bound, the correction restores it and the
+        // 1/rev ripple falls to n3's quantisation (docs/eccentricity-hardware.md).
+        let (worst_b, worst_a) = (
+            Ripple::worst_over_bound(&ripple.n3_before),
+            Ripple::worst_over_bound(&ripple.n3_after),
         );
-        // Corrected, n3 is within its bound at every speed. Below r = 1/(2e) (43 lines per
-        // dt here) n3's dead zone hides the eccentricity (no dither: p-p 0) and the
-        // correction puts the true ripple back, inside the bound; above it the eccentricity
-        // breaks the bound, the correction restores it and the 1/rev ripple falls to n3's
-        // quantisation (docs/eccentricity-hardware.md).
+        let (fb, fa) = (
+            figures(&Ripple::errors(&ripple.n3_before)),
+            figures(&Ripple::errors(&ripple.n3_after)),
+        );
         assert!(
-            worst(&n3a) <= 1.0,
-            "{rpm} rpm: corrected n3 beyond its bound: {}",
-            worst(&n3a)
+            worst_a <= 1.0,
+            "{rpm} rpm: corrected n3 beyond its bound: {worst_a}"
         );
-        if r < 0.5 / e {
+        if ripple.r < 0.5 / e {
             assert_eq!(fb.pp_ppm, 0.0, "{rpm} rpm: n3 dithers in its dead zone");
-            assert!(worst(&n3b) <= 1.0);
+            assert!(worst_b <= 1.0);
         } else {
             assert!(
-                worst(&n3b) > 1.0,
+                worst_b > 1.0,
                 "{rpm} rpm: the eccentricity should break eq. (13)"
             );
             assert!(
@@ -287,37 +207,5 @@ fn corrected_mt_ripple_on_verilog() {
                 fa.h1_ppm
             );
         }
-        let csv: String = before
-            .iter()
-            .zip(&after)
-            .map(|(x, y)| {
-                format!(
-                    "{:.6},{:.3},{:.3}\n",
-                    x.0 - before[0].0,
-                    x.1 * 1e6,
-                    y.1 * 1e6
-                )
-            })
-            .collect();
-        std::fs::write(
-            dir.join(format!("rpm{rpm}.csv")),
-            format!("angle_rad,before_ppm,after_ppm\n{csv}"),
-        )
-        .unwrap();
-        assert!(
-            b.h1_ppm > 0.9 * e * 1e6,
-            "{rpm} rpm: 1/rev before {}",
-            b.h1_ppm
-        );
-        assert!(
-            a.worst_ppm <= budget_ppm,
-            "{rpm} rpm: worst {} ppm, budget {budget_ppm}",
-            a.worst_ppm
-        );
-        assert!(
-            b.h1_ppm / a.h1_ppm > 1000.0,
-            "{rpm} rpm: ratio {}",
-            b.h1_ppm / a.h1_ppm
-        );
     }
 }

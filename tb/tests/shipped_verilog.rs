@@ -1,6 +1,8 @@
 //! The Verilog that ships is the Verilog that was tested: `generated/encspeed_core.v` is
 //! what the generator emits for the default parameters, it passes lint and synthesis, and
-//! it equals the bit-true golden model on every cycle in Verilator and in Icarus.
+//! it equals the bit-true golden model on every cycle in Verilator and in Icarus;
+//! `generated/encspeed_ecc.v` is current and synthesises with its tables in block RAM (its
+//! behaviour on the Verilog: tb/tests/ecc_top.rs).
 
 use golden::bittrue::CoreInputs;
 use golden::params::{Params, Spec};
@@ -38,6 +40,12 @@ fn generated_files_are_up_to_date() {
     );
     // Emission is deterministic.
     assert_eq!(e.verilog, hdl::emit_core(&default_params()).verilog);
+    // The eccentricity-corrected top.
+    let ecc = hdl::emit_ecc(&default_params()).unwrap();
+    assert!(
+        ecc == std::fs::read_to_string(generated("encspeed_ecc.v")).unwrap_or_default(),
+        "generated/encspeed_ecc.v {stale}"
+    );
     // The Wishbone top and the C header.
     for (name, text) in hdl::emit_wb::emit_wb(&default_params()) {
         let shipped = std::fs::read_to_string(generated(name)).unwrap_or_default();
@@ -119,19 +127,40 @@ fn verilator_lint_is_clean_with_the_documented_waivers() {
 
 #[test]
 fn yosys_synthesises_it_for_ice40_without_latches() {
+    let log = yosys_synth("encspeed_core", &shipped_verilog());
+    assert!(log.contains("SB_LUT4"), "no logic synthesised:\n{log}");
+}
+
+/// `generated/encspeed_ecc.v` synthesises without latches, and each corrector's sine table
+/// (K = 1024 words of 24 bits = 24 kbit) maps to block RAM: 6 SB_RAM40_4K (4 kbit) each,
+/// 12 in all, by hand.
+#[test]
+fn yosys_synthesises_the_ecc_top_with_its_tables_in_block_ram() {
+    let v = std::fs::read_to_string(generated("encspeed_ecc.v")).expect("generated/encspeed_ecc.v");
+    let log = yosys_synth("encspeed_ecc", &v);
+    let brams = log
+        .lines()
+        .rev()
+        .find_map(|l| l.trim().strip_prefix("SB_RAM40_4K"))
+        .map(|n| n.trim().parse::<u32>().unwrap());
+    assert_eq!(brams, Some(12), "block RAMs:\n{log}");
+}
+
+/// yosys `synth_ice40` of `top` in `verilog`, `check -assert`, no latch inferred; the log.
+fn yosys_synth(top: &str, verilog: &str) -> String {
     let dir = tb::target_dir().join("yosys");
     std::fs::create_dir_all(&dir).unwrap();
-    let v = dir.join("encspeed_core.v");
-    std::fs::write(&v, shipped_verilog()).unwrap();
+    let v = dir.join(format!("{top}.v"));
+    std::fs::write(&v, verilog).unwrap();
     let out = Command::new("yosys")
         .arg("-p")
         .arg(format!(
-            "read_verilog {}; synth_ice40 -top encspeed_core; check -assert; stat",
+            "read_verilog {}; synth_ice40 -top {top}; check -assert; stat",
             v.display()
         ))
         .output()
         .expect("yosys is installed by .ci/run");
-    let log = String::from_utf8_lossy(&out.stdout);
+    let log = String::from_utf8_lossy(&out.stdout).to_string();
     assert!(
         out.status.success(),
         "yosys failed:\n{log}\n{}",
@@ -143,8 +172,8 @@ fn yosys_synthesises_it_for_ice40_without_latches() {
         .lines()
         .filter(|l| l.trim_start().starts_with("Latch inferred"))
         .collect();
-    assert!(latches.is_empty(), "latches inferred: {latches:#?}");
-    assert!(log.contains("SB_LUT4"), "no logic synthesised:\n{log}");
+    assert!(latches.is_empty(), "{top}: latches inferred: {latches:#?}");
+    log
 }
 
 /// Named scenarios with the motion scaled to a dt of 1000 cycles (driven on cfg_dt), so
