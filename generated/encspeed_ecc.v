@@ -50,7 +50,7 @@
 //   output mt_t[23:0]: M/T: clock cycles from the step before the window's first to its last (mt_m > 0), else cycles since the last step
 //   output mt_negative: M/T: the last window's steps were backward
 //   output dt_active[23:0]: the dt in use, clock cycles: cfg_dt after its default and minimum, registered
-//   input  ecc_c[31:0]: eccentricity coefficient c = E cos(theta0), two's complement Q15.16 in lines (E = lines * e / 2pi, e = disc centre offset / disc radius); read when a job starts, so it may change at any time
+//   input  ecc_c[31:0]: eccentricity coefficient c = E cos(theta0), two's complement Q15.16 in lines (E = lines * e / 2pi, e = disc centre offset / disc radius); sampled at each mt_strobe and speed_strobe for the correction of that estimate
 //   input  ecc_d[31:0]: eccentricity coefficient d = E sin(theta0), Q15.16 lines
 //   output speed_mtc[40:0]: M/T speed of each window corrected for the eccentricity; format as speed_mt; needs cfg_z_mode = 1 or 3 (position counted from line 0)
 //   output mtc_strobe: one cycle: speed_mtc has just been written

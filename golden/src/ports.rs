@@ -91,7 +91,7 @@ pub fn ecc_ports(p: &Params) -> Vec<Port> {
         description,
     };
     v.extend([
-        port("ecc_c", "input", 32, "eccentricity coefficient c = E cos(theta0), two's complement Q15.16 in lines (E = lines * e / 2pi, e = disc centre offset / disc radius); read when a job starts, so it may change at any time"),
+        port("ecc_c", "input", 32, "eccentricity coefficient c = E cos(theta0), two's complement Q15.16 in lines (E = lines * e / 2pi, e = disc centre offset / disc radius); sampled at each mt_strobe and speed_strobe for the correction of that estimate"),
         port("ecc_d", "input", 32, "eccentricity coefficient d = E sin(theta0), Q15.16 lines"),
         port("speed_mtc", "output", s, "M/T speed of each window corrected for the eccentricity; format as speed_mt; needs cfg_z_mode = 1 or 3 (position counted from line 0)"),
         port("mtc_strobe", "output", 1, "one cycle: speed_mtc has just been written"),

@@ -205,7 +205,8 @@ pub fn emit_ecc(p: &Params) -> Result<String, String> {
 }
 
 /// docs/ports.md for `p`: every port of `encspeed_core` with its width and meaning, and the
-/// latencies, from the same description as the Verilog header and the manifest.
+/// latencies, from the same description as the Verilog header and the manifest; then the
+/// ports `encspeed_ecc` adds.
 pub fn ports_markdown(p: &Params) -> String {
     let mut md = String::new();
     md.push_str("# Ports of `encspeed_core`\n\n");
@@ -242,6 +243,24 @@ pub fn ports_markdown(p: &Params) -> String {
         md.push_str(&format!(
             "| {filter} | {} | {} | {} |\n",
             l.edge_to_position, l.speed_calc, l.edge_to_speed_strobe
+        ));
+    }
+    md.push_str(&format!(
+        "\n## `encspeed_ecc`: the core with the eccentricity-corrected speeds\n\n\
+         `generated/encspeed_ecc.v` has every port above, unchanged, and these \
+         ([eccentricity-hardware.md](eccentricity-hardware.md)). Latencies: `mtc_strobe` \
+         comes {} edges after the `mt_strobe` of its window, `n3c_strobe` {} edges after \
+         the `speed_strobe` of its n3; a request arriving while a corrector is busy \
+         replaces a pending one (the latest wins).\n\n",
+        golden::mt_corrector::latency_cycles(p.counter_bits(), p.speed_frac_bits()),
+        golden::n3_corrector::latency_cycles(p.counter_bits()),
+    ));
+    md.push_str("| port | dir | width | meaning |\n|---|---|---|---|\n");
+    let core = core_ports(p);
+    for port in golden::ports::ecc_ports(p).iter().skip(core.len()) {
+        md.push_str(&format!(
+            "| `{}` | {} | {} | {} |\n",
+            port.name, port.direction, port.width, port.description
         ));
     }
     md
