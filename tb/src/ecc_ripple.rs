@@ -168,49 +168,32 @@ impl Ripple {
         let kept = || strobes.iter().filter(|s| s.cycle > aligned_after);
         // Whole revolutions from each series' first estimate (the 1/rev DFT bin is exact
         // over whole revolutions).
-        let window = |v: Vec<(f64, f64, f64)>| -> Vec<(f64, f64, f64)> {
-            let a0 = v.first().map_or(0.0, |x| x.0);
-            v.into_iter()
-                .filter(|x| x.0 < a0 + TAU * setup.revs)
-                .collect()
-        };
+        let revs = setup.revs;
         // M/T reports 0 for a window that has no measured interval (the first after reset):
         // not an estimate of a turning shaft, so not counted.
         let mt = |f: fn(&EccStrobe) -> Option<i64>| -> Vec<(f64, f64)> {
-            window(
-                kept()
-                    .filter_map(|s| {
-                        f(s).filter(|&x| x != 0)
-                            .map(|x| (angle(s.cycle), x as f64 / lsb / r - 1.0, 0.0))
-                    })
-                    .collect(),
-            )
-            .into_iter()
-            .map(|x| (x.0, x.1))
-            .collect()
+            let v = kept()
+                .filter_map(|s| {
+                    f(s).filter(|&x| x != 0)
+                        .map(|x| (angle(s.cycle), x as f64 / lsb / r - 1.0))
+                })
+                .collect();
+            whole_revolutions(v, |x| x.0, revs)
         };
         let n3 = |f: fn(&EccStrobe) -> Option<i64>| -> Vec<N3Sample> {
-            window(
-                kept()
-                    .filter_map(|s| {
-                        f(s).map(|x| {
-                            let n1 = s.speed_nep as f64 / s.speed_ndt.max(1) as f64;
-                            (
-                                angle(s.cycle),
-                                x as f64 / lsb / r - 1.0,
-                                n3_error_budget(n1, p.dt_cycles()),
-                            )
-                        })
+            let v = kept()
+                .filter_map(|s| {
+                    f(s).map(|x| {
+                        let n1 = s.speed_nep as f64 / s.speed_ndt.max(1) as f64;
+                        N3Sample {
+                            angle: angle(s.cycle),
+                            error: x as f64 / lsb / r - 1.0,
+                            bound: n3_error_budget(n1, p.dt_cycles()),
+                        }
                     })
-                    .collect(),
-            )
-            .into_iter()
-            .map(|x| N3Sample {
-                angle: x.0,
-                error: x.1,
-                bound: x.2,
-            })
-            .collect()
+                })
+                .collect();
+            whole_revolutions(v, |x| x.angle, revs)
         };
         let line_period = clock / (rps * f64::from(p.lines()));
         let t_min = (dt - line_period).max(line_period * (1.0 - 2.0 * setup.e));
@@ -289,6 +272,14 @@ impl Ripple {
         }
         out
     }
+}
+
+/// The samples of `v` (in angle order) less than `revs` revolutions after the first.
+fn whole_revolutions<T>(v: Vec<T>, angle: impl Fn(&T) -> f64, revs: f64) -> Vec<T> {
+    let a0 = v.first().map_or(0.0, &angle);
+    v.into_iter()
+        .filter(|x| angle(x) < a0 + TAU * revs)
+        .collect()
 }
 
 /// Run `setup` on the compiled Verilog `sim` for `p` (event mode): every strobe, and the
