@@ -2,10 +2,11 @@
 // Command: encspeed generate --clock-hz 100000000 --lines 1024 --dt-cycles 100000 --counter-bits 24 --timeout-s 1
 // Parameters: clock_hz = 100000000, lines = 1024, dt_cycles = 100000, counter_bits = 24, timeout_s = 1
 // Derived: omega_lim = 0.9765625 rev/s at dt_cycles, timeout_dt = 1000 dt intervals, counters saturate at 16777215
-// Function: encspeed_core (unchanged, every port) with its M/T and n3 speeds corrected for the once-per-revolution ripple of an eccentric disc, from the runtime coefficients ecc_c, ecc_d (Zhao; docs/eccentricity-hardware.md).
+// Function: encspeed_core (unchanged, every port) with its M/T and n3 speeds corrected for the once-per-revolution ripple of an eccentric disc, from the runtime coefficients ecc_c, ecc_d, and the online identification of that eccentricity between two index pulses (Zhao; docs/eccentricity-hardware.md).
 // Speeds: two's complement, 41 bits, speed_frac_bits = 16: value = raw * 2^-16 omega_lim (one line per dt).
 // Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 128; A/B edge that restarts Table 1 to speed_strobe 134.
 // Correctors: sine table of 1024 entries x 24 bits; mtc_strobe 164 cycles after mt_strobe; n3c_strobe 116 cycles after speed_strobe; a request arriving while busy replaces a pending one (the latest wins).
+// Identification: a pulse on ident_arm (once an index has aligned the position) gathers the next revolution, index to index, of forward line edges; ident_done rises 2 edges after the edge that raised the closing index; sums 72 bits.
 // Ports:
 //   input  clock: core clock; everything happens at its rising edge
 //   input  reset: synchronous, active high; hold it for at least one edge
@@ -56,10 +57,21 @@
 //   output mtc_strobe: one cycle: speed_mtc has just been written
 //   output speed_n3c[40:0]: Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3
 //   output n3c_strobe: one cycle: speed_n3c has just been written
+//   input  ident_arm: one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification; raise it once an index has aligned the position (cfg_z_mode = 1 or 3); clears ident_done
+//   output ident_done: the ident_* results are complete (registered the edge after the closing index); sticky until ident_arm
+//   output ident_overflow: more than 2^16 lines between the index pulses (contract broken, extra lines dropped)
+//   output ident_count[16:0]: forward lines gathered N (lines per revolution for a clean revolution)
+//   output ident_t_min[31:0]: shortest line period, clock cycles (Zhao's T_min)
+//   output ident_p_min[15:0]: line number of the edge that closed it (first on ties)
+//   output ident_t_max[31:0]: longest line period, clock cycles (Zhao's T_max)
+//   output ident_p_max[15:0]: line number of the edge that closed it (first on ties)
+//   output ident_sum_t[71:0]: sum of the line periods T, clock cycles (the revolution's length)
+//   output ident_sum_sin[71:0]: sum of T * round(Q sin(2 pi p / lines)), two's complement, Q = 2^23 - 1, p the line number of the edge closing T
+//   output ident_sum_cos[71:0]: sum of T * round(Q cos(2 pi p / lines)), two's complement; e and theta0 from the three sums: golden::ident_gatherer::identify_from_sums (docs/eccentricity-hardware.md)
 
 
 
-module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count,speed_position,speed_nep,speed_ndt,mt_strobe,mt_m,mt_t,mt_negative,dt_active,ecc_c,ecc_d,speed_mtc,mtc_strobe,speed_n3c,n3c_strobe);
+module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count,speed_position,speed_nep,speed_ndt,mt_strobe,mt_m,mt_t,mt_negative,dt_active,ecc_c,ecc_d,speed_mtc,mtc_strobe,speed_n3c,n3c_strobe,ident_arm,ident_done,ident_overflow,ident_count,ident_t_min,ident_p_min,ident_t_max,ident_p_max,ident_sum_t,ident_sum_sin,ident_sum_cos);
     
     // Module arguments
     input wire  clock;
@@ -111,6 +123,17 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
     output reg  mtc_strobe;
     output reg  [40:0] speed_n3c;
     output reg  n3c_strobe;
+    input wire  ident_arm;
+    output reg  ident_done;
+    output reg  ident_overflow;
+    output reg  [16:0] ident_count;
+    output reg  [31:0] ident_t_min;
+    output reg  [15:0] ident_p_min;
+    output reg  [31:0] ident_t_max;
+    output reg  [15:0] ident_p_max;
+    output reg  [71:0] ident_sum_t;
+    output reg  [71:0] ident_sum_sin;
+    output reg  [71:0] ident_sum_cos;
     
     // Constant declarations
     localparam  mode_x1 = 2'b0;
@@ -193,6 +216,32 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
     reg  [31:0] n3_corrector$coef_d;
     wire  [40:0] n3_corrector$n3c;
     wire  n3_corrector$valid;
+    reg  line_tap$clock;
+    reg  line_tap$reset;
+    reg  [31:0] line_tap$position;
+    reg  line_tap$forward;
+    reg  [1:0] line_tap$shift;
+    reg  [31:0] line_tap$counts_per_rev;
+    wire  line_tap$line;
+    wire  [15:0] line_tap$line_position;
+    wire  [31:0] line_tap$period;
+    reg  gatherer$clock;
+    reg  gatherer$reset;
+    reg  gatherer$arm;
+    reg  gatherer$index;
+    reg  gatherer$line;
+    reg  [15:0] gatherer$position;
+    reg  [31:0] gatherer$period;
+    wire  gatherer$done;
+    wire  gatherer$overflow;
+    wire  [16:0] gatherer$count;
+    wire  [31:0] gatherer$t_min;
+    wire  [15:0] gatherer$p_min;
+    wire  [31:0] gatherer$t_max;
+    wire  [15:0] gatherer$p_max;
+    wire  [71:0] gatherer$sum_t;
+    wire  [71:0] gatherer$sum_sin;
+    wire  [71:0] gatherer$sum_cos;
     reg  [1:0] mode_reg$d;
     wire  [1:0] mode_reg$q;
     reg  mode_reg$clock;
@@ -278,6 +327,36 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         .n3c(n3_corrector$n3c),
         .valid(n3_corrector$valid)
     );
+    encspeed_ecc$line_tap line_tap(
+        .clock(line_tap$clock),
+        .reset(line_tap$reset),
+        .position(line_tap$position),
+        .forward(line_tap$forward),
+        .shift(line_tap$shift),
+        .counts_per_rev(line_tap$counts_per_rev),
+        .line(line_tap$line),
+        .line_position(line_tap$line_position),
+        .period(line_tap$period)
+    );
+    encspeed_ecc$gatherer gatherer(
+        .clock(gatherer$clock),
+        .reset(gatherer$reset),
+        .arm(gatherer$arm),
+        .index(gatherer$index),
+        .line(gatherer$line),
+        .position(gatherer$position),
+        .period(gatherer$period),
+        .done(gatherer$done),
+        .overflow(gatherer$overflow),
+        .count(gatherer$count),
+        .t_min(gatherer$t_min),
+        .p_min(gatherer$p_min),
+        .t_max(gatherer$t_max),
+        .p_max(gatherer$p_max),
+        .sum_t(gatherer$sum_t),
+        .sum_sin(gatherer$sum_sin),
+        .sum_cos(gatherer$sum_cos)
+    );
     encspeed_ecc$mode_reg mode_reg(
         .d(mode_reg$d),
         .q(mode_reg$q),
@@ -289,6 +368,8 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         core$clock = clock;
         corrector$clock = clock;
         n3_corrector$clock = clock;
+        line_tap$clock = clock;
+        gatherer$clock = clock;
         mode_reg$clock = clock;
         mode_reg$d = mode_reg$q;
         core$reset = reset;
@@ -369,6 +450,27 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         n3c_strobe = n3_corrector$valid;
         speed_mtc = corrector$speed_mtc;
         mtc_strobe = corrector$valid;
+        line_tap$reset = reset | (cfg_mode != mode_reg$q);
+        line_tap$position = core$position;
+        line_tap$forward = core$direction;
+        line_tap$shift = shift;
+        line_tap$counts_per_rev = counts_per_rev;
+        gatherer$reset = reset | (cfg_mode != mode_reg$q);
+        gatherer$arm = ident_arm;
+        gatherer$index = core$index;
+        gatherer$line = line_tap$line;
+        gatherer$position = line_tap$line_position;
+        gatherer$period = line_tap$period;
+        ident_done = gatherer$done;
+        ident_overflow = gatherer$overflow;
+        ident_count = gatherer$count;
+        ident_t_min = gatherer$t_min;
+        ident_p_min = gatherer$p_min;
+        ident_t_max = gatherer$t_max;
+        ident_p_max = gatherer$p_max;
+        ident_sum_t = gatherer$sum_t;
+        ident_sum_sin = gatherer$sum_sin;
+        ident_sum_cos = gatherer$sum_cos;
     end
     
 endmodule // encspeed_ecc
@@ -13295,6 +13397,2946 @@ module encspeed_ecc$corrector$state(d,q,clock);
     end
           
 endmodule // encspeed_ecc$corrector$state
+
+
+module encspeed_ecc$gatherer(clock,reset,arm,index,line,position,period,done,overflow,count,t_min,p_min,t_max,p_max,sum_t,sum_sin,sum_cos);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  arm;
+    input wire  index;
+    input wire  line;
+    input wire  [15:0] position;
+    input wire  [31:0] period;
+    output reg  done;
+    output reg  overflow;
+    output reg  [16:0] count;
+    output reg  [31:0] t_min;
+    output reg  [15:0] p_min;
+    output reg  [31:0] t_max;
+    output reg  [15:0] p_max;
+    output reg  [71:0] sum_t;
+    output reg  [71:0] sum_sin;
+    output reg  [71:0] sum_cos;
+    
+    // Constant declarations
+    localparam  idle_st = 2'b0;
+    localparam  armed_st = 2'b1;
+    localparam  gather_st = 2'b10;
+    localparam  zero_a = 16'h0;
+    localparam  quarter = 16'h100;
+    localparam  zero_t = 32'h0;
+    localparam  zero_w = 72'h0;
+    localparam  zero17 = 17'b0;
+    localparam  one17 = 17'b1;
+    localparam  full17 = 17'b10000000000000000;
+    
+    // Stub signals
+    reg  rom_s$clock;
+    reg  [15:0] rom_s$m;
+    reg  [15:0] rom_s$m0;
+    wire  [23:0] rom_s$data;
+    reg  rom_c$clock;
+    reg  [15:0] rom_c$m;
+    reg  [15:0] rom_c$m0;
+    wire  [23:0] rom_c$data;
+    reg  [31:0] mac$t;
+    reg  [23:0] mac$s;
+    reg  [23:0] mac$c;
+    reg  [71:0] mac$acc_t;
+    reg  [71:0] mac$acc_s;
+    reg  [71:0] mac$acc_c;
+    wire  [71:0] mac$nxt_t;
+    wire  [71:0] mac$nxt_s;
+    wire  [71:0] mac$nxt_c;
+    reg  [1:0] state$d;
+    wire  [1:0] state$q;
+    reg  state$clock;
+    reg  fin$d;
+    wire  fin$q;
+    reg  fin$clock;
+    reg  pend$d;
+    wire  pend$q;
+    reg  pend$clock;
+    reg  [31:0] t_reg$d;
+    wire  [31:0] t_reg$q;
+    reg  t_reg$clock;
+    reg  [15:0] p_reg$d;
+    wire  [15:0] p_reg$q;
+    reg  p_reg$clock;
+    reg  done_r$d;
+    wire  done_r$q;
+    reg  done_r$clock;
+    reg  ovf$d;
+    wire  ovf$q;
+    reg  ovf$clock;
+    reg  [16:0] cnt$d;
+    wire  [16:0] cnt$q;
+    reg  cnt$clock;
+    reg  [31:0] tmin$d;
+    wire  [31:0] tmin$q;
+    reg  tmin$clock;
+    reg  [15:0] pmin$d;
+    wire  [15:0] pmin$q;
+    reg  pmin$clock;
+    reg  [31:0] tmax$d;
+    wire  [31:0] tmax$q;
+    reg  tmax$clock;
+    reg  [15:0] pmax$d;
+    wire  [15:0] pmax$q;
+    reg  pmax$clock;
+    reg  [71:0] st$d;
+    wire  [71:0] st$q;
+    reg  st$clock;
+    reg  [71:0] ss$d;
+    wire  [71:0] ss$q;
+    reg  ss$clock;
+    reg  [71:0] sc$d;
+    wire  [71:0] sc$q;
+    reg  sc$clock;
+    
+    // Sub module instances
+    encspeed_ecc$gatherer$rom_s rom_s(
+        .clock(rom_s$clock),
+        .m(rom_s$m),
+        .m0(rom_s$m0),
+        .data(rom_s$data)
+    );
+    encspeed_ecc$gatherer$rom_c rom_c(
+        .clock(rom_c$clock),
+        .m(rom_c$m),
+        .m0(rom_c$m0),
+        .data(rom_c$data)
+    );
+    encspeed_ecc$gatherer$mac mac(
+        .t(mac$t),
+        .s(mac$s),
+        .c(mac$c),
+        .acc_t(mac$acc_t),
+        .acc_s(mac$acc_s),
+        .acc_c(mac$acc_c),
+        .nxt_t(mac$nxt_t),
+        .nxt_s(mac$nxt_s),
+        .nxt_c(mac$nxt_c)
+    );
+    encspeed_ecc$gatherer$state state(
+        .d(state$d),
+        .q(state$q),
+        .clock(state$clock)
+    );
+    encspeed_ecc$gatherer$fin fin(
+        .d(fin$d),
+        .q(fin$q),
+        .clock(fin$clock)
+    );
+    encspeed_ecc$gatherer$pend pend(
+        .d(pend$d),
+        .q(pend$q),
+        .clock(pend$clock)
+    );
+    encspeed_ecc$gatherer$t_reg t_reg(
+        .d(t_reg$d),
+        .q(t_reg$q),
+        .clock(t_reg$clock)
+    );
+    encspeed_ecc$gatherer$p_reg p_reg(
+        .d(p_reg$d),
+        .q(p_reg$q),
+        .clock(p_reg$clock)
+    );
+    encspeed_ecc$gatherer$done_r done_r(
+        .d(done_r$d),
+        .q(done_r$q),
+        .clock(done_r$clock)
+    );
+    encspeed_ecc$gatherer$ovf ovf(
+        .d(ovf$d),
+        .q(ovf$q),
+        .clock(ovf$clock)
+    );
+    encspeed_ecc$gatherer$cnt cnt(
+        .d(cnt$d),
+        .q(cnt$q),
+        .clock(cnt$clock)
+    );
+    encspeed_ecc$gatherer$tmin tmin(
+        .d(tmin$d),
+        .q(tmin$q),
+        .clock(tmin$clock)
+    );
+    encspeed_ecc$gatherer$pmin pmin(
+        .d(pmin$d),
+        .q(pmin$q),
+        .clock(pmin$clock)
+    );
+    encspeed_ecc$gatherer$tmax tmax(
+        .d(tmax$d),
+        .q(tmax$q),
+        .clock(tmax$clock)
+    );
+    encspeed_ecc$gatherer$pmax pmax(
+        .d(pmax$d),
+        .q(pmax$q),
+        .clock(pmax$clock)
+    );
+    encspeed_ecc$gatherer$st st(
+        .d(st$d),
+        .q(st$q),
+        .clock(st$clock)
+    );
+    encspeed_ecc$gatherer$ss ss(
+        .d(ss$d),
+        .q(ss$q),
+        .clock(ss$clock)
+    );
+    encspeed_ecc$gatherer$sc sc(
+        .d(sc$d),
+        .q(sc$q),
+        .clock(sc$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        state$clock = clock;
+        fin$clock = clock;
+        pend$clock = clock;
+        t_reg$clock = clock;
+        p_reg$clock = clock;
+        done_r$clock = clock;
+        ovf$clock = clock;
+        cnt$clock = clock;
+        tmin$clock = clock;
+        pmin$clock = clock;
+        tmax$clock = clock;
+        pmax$clock = clock;
+        st$clock = clock;
+        ss$clock = clock;
+        sc$clock = clock;
+        state$d = state$q;
+        fin$d = fin$q;
+        pend$d = pend$q;
+        t_reg$d = t_reg$q;
+        p_reg$d = p_reg$q;
+        done_r$d = done_r$q;
+        ovf$d = ovf$q;
+        cnt$d = cnt$q;
+        tmin$d = tmin$q;
+        pmin$d = pmin$q;
+        tmax$d = tmax$q;
+        pmax$d = pmax$q;
+        st$d = st$q;
+        ss$d = ss$q;
+        sc$d = sc$q;
+        rom_s$clock = clock;
+        rom_c$clock = clock;
+        rom_s$m = position;
+        rom_s$m0 = zero_a;
+        rom_c$m = position;
+        rom_c$m0 = quarter;
+        mac$t = t_reg$q;
+        mac$s = rom_s$data;
+        mac$c = rom_c$data;
+        mac$acc_t = st$q;
+        mac$acc_s = ss$q;
+        mac$acc_c = sc$q;
+        if (pend$q) begin
+            if (cnt$q == full17) begin
+                ovf$d = 1'b1;
+            end
+            else begin
+                if ((cnt$q == zero17) | (t_reg$q < tmin$q)) begin
+                    tmin$d = t_reg$q;
+                    pmin$d = p_reg$q;
+                end
+                if ((cnt$q == zero17) | (t_reg$q > tmax$q)) begin
+                    tmax$d = t_reg$q;
+                    pmax$d = p_reg$q;
+                end
+                cnt$d = cnt$q + one17;
+                st$d = mac$nxt_t;
+                ss$d = mac$nxt_s;
+                sc$d = mac$nxt_c;
+            end
+        end
+        if (fin$q) begin
+            done_r$d = 1'b1;
+        end
+        pend$d = line & (state$q == gather_st);
+        t_reg$d = period;
+        p_reg$d = position;
+        fin$d = 1'b0;
+        if (arm) begin
+            state$d = armed_st;
+            done_r$d = 1'b0;
+        end
+        else if (index) begin
+            if (state$q == armed_st) begin
+                state$d = gather_st;
+                ovf$d = 1'b0;
+                cnt$d = zero17;
+                tmin$d = zero_t;
+                pmin$d = zero_a;
+                tmax$d = zero_t;
+                pmax$d = zero_a;
+                st$d = zero_w;
+                ss$d = zero_w;
+                sc$d = zero_w;
+            end
+            if (state$q == gather_st) begin
+                state$d = idle_st;
+                fin$d = 1'b1;
+            end
+        end
+        if (reset) begin
+            state$d = idle_st;
+            fin$d = 1'b0;
+            pend$d = 1'b0;
+            t_reg$d = zero_t;
+            p_reg$d = zero_a;
+            done_r$d = 1'b0;
+            ovf$d = 1'b0;
+            cnt$d = zero17;
+            tmin$d = zero_t;
+            pmin$d = zero_a;
+            tmax$d = zero_t;
+            pmax$d = zero_a;
+            st$d = zero_w;
+            ss$d = zero_w;
+            sc$d = zero_w;
+        end
+        done = done_r$q;
+        overflow = ovf$q;
+        count = cnt$q;
+        t_min = tmin$q;
+        p_min = pmin$q;
+        t_max = tmax$q;
+        p_max = pmax$q;
+        sum_t = st$q;
+        sum_sin = ss$q;
+        sum_cos = sc$q;
+    end
+    
+endmodule // encspeed_ecc$gatherer
+
+
+module encspeed_ecc$gatherer$cnt(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$cnt
+
+
+module encspeed_ecc$gatherer$done_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$done_r
+
+
+module encspeed_ecc$gatherer$fin(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$fin
+
+
+module encspeed_ecc$gatherer$mac(t,s,c,acc_t,acc_s,acc_c,nxt_t,nxt_s,nxt_c);
+    
+    // Module arguments
+    input wire  [31:0] t;
+    input wire  [23:0] s;
+    input wire  [23:0] c;
+    input wire  [71:0] acc_t;
+    input wire  [71:0] acc_s;
+    input wire  [71:0] acc_c;
+    output reg  [71:0] nxt_t;
+    output reg  [71:0] nxt_s;
+    output reg  [71:0] nxt_c;
+    
+    // Update code (custom)
+    wire [55:0] t_x = {24'd0, t};
+    wire [55:0] s_x = {{32{1'b0}}, s};
+    wire [55:0] c_x = {{32{1'b0}}, c};
+    wire [55:0] pu_s = t_x * s_x;
+    wire [55:0] pu_c = t_x * c_x;
+    wire [56:0] t_hi = {1'b0, t, 24'd0};
+    wire [56:0] ps = {1'b0, pu_s} - (s[23] ? t_hi : 57'd0);
+    wire [56:0] pc = {1'b0, pu_c} - (c[23] ? t_hi : 57'd0);
+    
+    always @(*) begin
+       nxt_t = acc_t + {{40{1'b0}}, t};
+       nxt_s = acc_s + {{15{ps[56]}}, ps};
+       nxt_c = acc_c + {{15{pc[56]}}, pc};
+    end
+endmodule // encspeed_ecc$gatherer$mac
+
+
+module encspeed_ecc$gatherer$ovf(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$ovf
+
+
+module encspeed_ecc$gatherer$p_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$p_reg
+
+
+module encspeed_ecc$gatherer$pend(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$pend
+
+
+module encspeed_ecc$gatherer$pmax(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$pmax
+
+
+module encspeed_ecc$gatherer$pmin(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$pmin
+
+
+module encspeed_ecc$gatherer$rom_c(clock,m,m0,data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] m;
+    input wire  [15:0] m0;
+    output reg  [23:0] data;
+    
+    // Constant declarations
+    localparam  k_minus_one = 16'h3ff;
+    localparam  k_mod = 16'h400;
+    
+    // Stub signals
+    reg  rom$clock;
+    reg  [15:0] rom$address;
+    wire  [23:0] rom$data;
+    
+    // Local signals
+    reg  [15:0] limit;
+    reg  [15:0] sum;
+    
+    // Sub module instances
+    encspeed_ecc$gatherer$rom_c$rom rom(
+        .clock(rom$clock),
+        .address(rom$address),
+        .data(rom$data)
+    );
+    
+    // Update code
+    always @(*) begin
+        rom$clock = clock;
+        limit = k_minus_one - m;
+        sum = m + m0;
+        rom$address = sum;
+        if (m0 > limit) begin
+            rom$address = sum - k_mod;
+        end
+        data = rom$data;
+    end
+    
+endmodule // encspeed_ecc$gatherer$rom_c
+
+
+module encspeed_ecc$gatherer$rom_c$rom(clock,address,data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] address;
+    output reg  [23:0] data;
+    
+    // Update code (custom)
+    reg [23:0] mem [1023:0];
+    reg [23:0] word;
+    reg in_range;
+    
+    initial begin
+        mem[0] = 24'h0;
+        mem[1] = 24'hc910;
+        mem[2] = 24'h1921d;
+        mem[3] = 24'h25b27;
+        mem[4] = 24'h3242b;
+        mem[5] = 24'h3ed27;
+        mem[6] = 24'h4b619;
+        mem[7] = 24'h57f00;
+        mem[8] = 24'h647d9;
+        mem[9] = 24'h710a3;
+        mem[10] = 24'h7d95c;
+        mem[11] = 24'h8a201;
+        mem[12] = 24'h96a90;
+        mem[13] = 24'ha3309;
+        mem[14] = 24'hafb68;
+        mem[15] = 24'hbc3ac;
+        mem[16] = 24'hc8bd3;
+        mem[17] = 24'hd53db;
+        mem[18] = 24'he1bc3;
+        mem[19] = 24'hee387;
+        mem[20] = 24'hfab27;
+        mem[21] = 24'h1072a0;
+        mem[22] = 24'h1139f1;
+        mem[23] = 24'h120117;
+        mem[24] = 24'h12c810;
+        mem[25] = 24'h138edc;
+        mem[26] = 24'h145577;
+        mem[27] = 24'h151bdf;
+        mem[28] = 24'h15e214;
+        mem[29] = 24'h16a813;
+        mem[30] = 24'h176dda;
+        mem[31] = 24'h183367;
+        mem[32] = 24'h18f8b8;
+        mem[33] = 24'h19bdcc;
+        mem[34] = 24'h1a82a0;
+        mem[35] = 24'h1b4733;
+        mem[36] = 24'h1c0b82;
+        mem[37] = 24'h1ccf8c;
+        mem[38] = 24'h1d9350;
+        mem[39] = 24'h1e56ca;
+        mem[40] = 24'h1f19f9;
+        mem[41] = 24'h1fdcdc;
+        mem[42] = 24'h209f70;
+        mem[43] = 24'h2161b3;
+        mem[44] = 24'h2223a5;
+        mem[45] = 24'h22e541;
+        mem[46] = 24'h23a688;
+        mem[47] = 24'h246777;
+        mem[48] = 24'h25280c;
+        mem[49] = 24'h25e845;
+        mem[50] = 24'h26a821;
+        mem[51] = 24'h27679e;
+        mem[52] = 24'h2826b9;
+        mem[53] = 24'h28e571;
+        mem[54] = 24'h29a3c4;
+        mem[55] = 24'h2a61b1;
+        mem[56] = 24'h2b1f35;
+        mem[57] = 24'h2bdc4e;
+        mem[58] = 24'h2c98fb;
+        mem[59] = 24'h2d553b;
+        mem[60] = 24'h2e110a;
+        mem[61] = 24'h2ecc68;
+        mem[62] = 24'h2f8752;
+        mem[63] = 24'h3041c7;
+        mem[64] = 24'h30fbc5;
+        mem[65] = 24'h31b54a;
+        mem[66] = 24'h326e54;
+        mem[67] = 24'h3326e2;
+        mem[68] = 24'h33def2;
+        mem[69] = 24'h349682;
+        mem[70] = 24'h354d90;
+        mem[71] = 24'h36041a;
+        mem[72] = 24'h36ba20;
+        mem[73] = 24'h376f9e;
+        mem[74] = 24'h382493;
+        mem[75] = 24'h38d8fe;
+        mem[76] = 24'h398cdd;
+        mem[77] = 24'h3a402d;
+        mem[78] = 24'h3af2ee;
+        mem[79] = 24'h3ba51e;
+        mem[80] = 24'h3c56ba;
+        mem[81] = 24'h3d07c1;
+        mem[82] = 24'h3db832;
+        mem[83] = 24'h3e680b;
+        mem[84] = 24'h3f1749;
+        mem[85] = 24'h3fc5ec;
+        mem[86] = 24'h4073f2;
+        mem[87] = 24'h412158;
+        mem[88] = 24'h41ce1e;
+        mem[89] = 24'h427a41;
+        mem[90] = 24'h4325c1;
+        mem[91] = 24'h43d09a;
+        mem[92] = 24'h447acd;
+        mem[93] = 24'h452456;
+        mem[94] = 24'h45cd35;
+        mem[95] = 24'h467568;
+        mem[96] = 24'h471cec;
+        mem[97] = 24'h47c3c2;
+        mem[98] = 24'h4869e6;
+        mem[99] = 24'h490f57;
+        mem[100] = 24'h49b415;
+        mem[101] = 24'h4a581c;
+        mem[102] = 24'h4afb6c;
+        mem[103] = 24'h4b9e03;
+        mem[104] = 24'h4c3fdf;
+        mem[105] = 24'h4ce100;
+        mem[106] = 24'h4d8162;
+        mem[107] = 24'h4e2105;
+        mem[108] = 24'h4ebfe8;
+        mem[109] = 24'h4f5e08;
+        mem[110] = 24'h4ffb65;
+        mem[111] = 24'h5097fc;
+        mem[112] = 24'h5133cc;
+        mem[113] = 24'h51ced4;
+        mem[114] = 24'h526912;
+        mem[115] = 24'h530284;
+        mem[116] = 24'h539b2a;
+        mem[117] = 24'h543302;
+        mem[118] = 24'h54ca0a;
+        mem[119] = 24'h556040;
+        mem[120] = 24'h55f5a4;
+        mem[121] = 24'h568a34;
+        mem[122] = 24'h571dee;
+        mem[123] = 24'h57b0d2;
+        mem[124] = 24'h5842dd;
+        mem[125] = 24'h58d40e;
+        mem[126] = 24'h596464;
+        mem[127] = 24'h59f3dd;
+        mem[128] = 24'h5a8279;
+        mem[129] = 24'h5b1035;
+        mem[130] = 24'h5b9d11;
+        mem[131] = 24'h5c290a;
+        mem[132] = 24'h5cb420;
+        mem[133] = 24'h5d3e51;
+        mem[134] = 24'h5dc79d;
+        mem[135] = 24'h5e5001;
+        mem[136] = 24'h5ed77c;
+        mem[137] = 24'h5f5e0d;
+        mem[138] = 24'h5fe3b3;
+        mem[139] = 24'h60686c;
+        mem[140] = 24'h60ec37;
+        mem[141] = 24'h616f14;
+        mem[142] = 24'h61f0ff;
+        mem[143] = 24'h6271fa;
+        mem[144] = 24'h62f201;
+        mem[145] = 24'h637114;
+        mem[146] = 24'h63ef32;
+        mem[147] = 24'h646c59;
+        mem[148] = 24'h64e888;
+        mem[149] = 24'h6563bf;
+        mem[150] = 24'h65ddfb;
+        mem[151] = 24'h66573c;
+        mem[152] = 24'h66cf80;
+        mem[153] = 24'h6746c7;
+        mem[154] = 24'h67bd0f;
+        mem[155] = 24'h683257;
+        mem[156] = 24'h68a69e;
+        mem[157] = 24'h6919e2;
+        mem[158] = 24'h698c24;
+        mem[159] = 24'h69fd60;
+        mem[160] = 24'h6a6d98;
+        mem[161] = 24'h6adcc9;
+        mem[162] = 24'h6b4af2;
+        mem[163] = 24'h6bb812;
+        mem[164] = 24'h6c2429;
+        mem[165] = 24'h6c8f34;
+        mem[166] = 24'h6cf934;
+        mem[167] = 24'h6d6227;
+        mem[168] = 24'h6dca0c;
+        mem[169] = 24'h6e30e2;
+        mem[170] = 24'h6e96a9;
+        mem[171] = 24'h6efb5e;
+        mem[172] = 24'h6f5f02;
+        mem[173] = 24'h6fc193;
+        mem[174] = 24'h702310;
+        mem[175] = 24'h708378;
+        mem[176] = 24'h70e2cb;
+        mem[177] = 24'h714107;
+        mem[178] = 24'h719e2c;
+        mem[179] = 24'h71fa38;
+        mem[180] = 24'h72552c;
+        mem[181] = 24'h72af05;
+        mem[182] = 24'h7307c3;
+        mem[183] = 24'h735f65;
+        mem[184] = 24'h73b5eb;
+        mem[185] = 24'h740b53;
+        mem[186] = 24'h745f9d;
+        mem[187] = 24'h74b2c8;
+        mem[188] = 24'h7504d2;
+        mem[189] = 24'h7555bc;
+        mem[190] = 24'h75a585;
+        mem[191] = 24'h75f42b;
+        mem[192] = 24'h7641ae;
+        mem[193] = 24'h768e0e;
+        mem[194] = 24'h76d949;
+        mem[195] = 24'h77235e;
+        mem[196] = 24'h776c4e;
+        mem[197] = 24'h77b417;
+        mem[198] = 24'h77fab9;
+        mem[199] = 24'h784032;
+        mem[200] = 24'h788483;
+        mem[201] = 24'h78c7ab;
+        mem[202] = 24'h7909a8;
+        mem[203] = 24'h794a7b;
+        mem[204] = 24'h798a23;
+        mem[205] = 24'h79c89e;
+        mem[206] = 24'h7a05ee;
+        mem[207] = 24'h7a4210;
+        mem[208] = 24'h7a7d04;
+        mem[209] = 24'h7ab6cb;
+        mem[210] = 24'h7aef62;
+        mem[211] = 24'h7b26ca;
+        mem[212] = 24'h7b5d03;
+        mem[213] = 24'h7b920b;
+        mem[214] = 24'h7bc5e2;
+        mem[215] = 24'h7bf887;
+        mem[216] = 24'h7c29fb;
+        mem[217] = 24'h7c5a3c;
+        mem[218] = 24'h7c894b;
+        mem[219] = 24'h7cb726;
+        mem[220] = 24'h7ce3ce;
+        mem[221] = 24'h7d0f41;
+        mem[222] = 24'h7d3980;
+        mem[223] = 24'h7d628a;
+        mem[224] = 24'h7d8a5e;
+        mem[225] = 24'h7db0fd;
+        mem[226] = 24'h7dd666;
+        mem[227] = 24'h7dfa98;
+        mem[228] = 24'h7e1d93;
+        mem[229] = 24'h7e3f57;
+        mem[230] = 24'h7e5fe4;
+        mem[231] = 24'h7e7f38;
+        mem[232] = 24'h7e9d55;
+        mem[233] = 24'h7eba39;
+        mem[234] = 24'h7ed5e5;
+        mem[235] = 24'h7ef057;
+        mem[236] = 24'h7f0991;
+        mem[237] = 24'h7f2191;
+        mem[238] = 24'h7f3857;
+        mem[239] = 24'h7f4de3;
+        mem[240] = 24'h7f6236;
+        mem[241] = 24'h7f754e;
+        mem[242] = 24'h7f872b;
+        mem[243] = 24'h7f97ce;
+        mem[244] = 24'h7fa736;
+        mem[245] = 24'h7fb563;
+        mem[246] = 24'h7fc255;
+        mem[247] = 24'h7fce0b;
+        mem[248] = 24'h7fd887;
+        mem[249] = 24'h7fe1c6;
+        mem[250] = 24'h7fe9cb;
+        mem[251] = 24'h7ff093;
+        mem[252] = 24'h7ff621;
+        mem[253] = 24'h7ffa72;
+        mem[254] = 24'h7ffd87;
+        mem[255] = 24'h7fff61;
+        mem[256] = 24'h7fffff;
+        mem[257] = 24'h7fff61;
+        mem[258] = 24'h7ffd87;
+        mem[259] = 24'h7ffa72;
+        mem[260] = 24'h7ff621;
+        mem[261] = 24'h7ff093;
+        mem[262] = 24'h7fe9cb;
+        mem[263] = 24'h7fe1c6;
+        mem[264] = 24'h7fd887;
+        mem[265] = 24'h7fce0b;
+        mem[266] = 24'h7fc255;
+        mem[267] = 24'h7fb563;
+        mem[268] = 24'h7fa736;
+        mem[269] = 24'h7f97ce;
+        mem[270] = 24'h7f872b;
+        mem[271] = 24'h7f754e;
+        mem[272] = 24'h7f6236;
+        mem[273] = 24'h7f4de3;
+        mem[274] = 24'h7f3857;
+        mem[275] = 24'h7f2191;
+        mem[276] = 24'h7f0991;
+        mem[277] = 24'h7ef057;
+        mem[278] = 24'h7ed5e5;
+        mem[279] = 24'h7eba39;
+        mem[280] = 24'h7e9d55;
+        mem[281] = 24'h7e7f38;
+        mem[282] = 24'h7e5fe4;
+        mem[283] = 24'h7e3f57;
+        mem[284] = 24'h7e1d93;
+        mem[285] = 24'h7dfa98;
+        mem[286] = 24'h7dd666;
+        mem[287] = 24'h7db0fd;
+        mem[288] = 24'h7d8a5e;
+        mem[289] = 24'h7d628a;
+        mem[290] = 24'h7d3980;
+        mem[291] = 24'h7d0f41;
+        mem[292] = 24'h7ce3ce;
+        mem[293] = 24'h7cb726;
+        mem[294] = 24'h7c894b;
+        mem[295] = 24'h7c5a3c;
+        mem[296] = 24'h7c29fb;
+        mem[297] = 24'h7bf887;
+        mem[298] = 24'h7bc5e2;
+        mem[299] = 24'h7b920b;
+        mem[300] = 24'h7b5d03;
+        mem[301] = 24'h7b26ca;
+        mem[302] = 24'h7aef62;
+        mem[303] = 24'h7ab6cb;
+        mem[304] = 24'h7a7d04;
+        mem[305] = 24'h7a4210;
+        mem[306] = 24'h7a05ee;
+        mem[307] = 24'h79c89e;
+        mem[308] = 24'h798a23;
+        mem[309] = 24'h794a7b;
+        mem[310] = 24'h7909a8;
+        mem[311] = 24'h78c7ab;
+        mem[312] = 24'h788483;
+        mem[313] = 24'h784032;
+        mem[314] = 24'h77fab9;
+        mem[315] = 24'h77b417;
+        mem[316] = 24'h776c4e;
+        mem[317] = 24'h77235e;
+        mem[318] = 24'h76d949;
+        mem[319] = 24'h768e0e;
+        mem[320] = 24'h7641ae;
+        mem[321] = 24'h75f42b;
+        mem[322] = 24'h75a585;
+        mem[323] = 24'h7555bc;
+        mem[324] = 24'h7504d2;
+        mem[325] = 24'h74b2c8;
+        mem[326] = 24'h745f9d;
+        mem[327] = 24'h740b53;
+        mem[328] = 24'h73b5eb;
+        mem[329] = 24'h735f65;
+        mem[330] = 24'h7307c3;
+        mem[331] = 24'h72af05;
+        mem[332] = 24'h72552c;
+        mem[333] = 24'h71fa38;
+        mem[334] = 24'h719e2c;
+        mem[335] = 24'h714107;
+        mem[336] = 24'h70e2cb;
+        mem[337] = 24'h708378;
+        mem[338] = 24'h702310;
+        mem[339] = 24'h6fc193;
+        mem[340] = 24'h6f5f02;
+        mem[341] = 24'h6efb5e;
+        mem[342] = 24'h6e96a9;
+        mem[343] = 24'h6e30e2;
+        mem[344] = 24'h6dca0c;
+        mem[345] = 24'h6d6227;
+        mem[346] = 24'h6cf934;
+        mem[347] = 24'h6c8f34;
+        mem[348] = 24'h6c2429;
+        mem[349] = 24'h6bb812;
+        mem[350] = 24'h6b4af2;
+        mem[351] = 24'h6adcc9;
+        mem[352] = 24'h6a6d98;
+        mem[353] = 24'h69fd60;
+        mem[354] = 24'h698c24;
+        mem[355] = 24'h6919e2;
+        mem[356] = 24'h68a69e;
+        mem[357] = 24'h683257;
+        mem[358] = 24'h67bd0f;
+        mem[359] = 24'h6746c7;
+        mem[360] = 24'h66cf80;
+        mem[361] = 24'h66573c;
+        mem[362] = 24'h65ddfb;
+        mem[363] = 24'h6563bf;
+        mem[364] = 24'h64e888;
+        mem[365] = 24'h646c59;
+        mem[366] = 24'h63ef32;
+        mem[367] = 24'h637114;
+        mem[368] = 24'h62f201;
+        mem[369] = 24'h6271fa;
+        mem[370] = 24'h61f0ff;
+        mem[371] = 24'h616f14;
+        mem[372] = 24'h60ec37;
+        mem[373] = 24'h60686c;
+        mem[374] = 24'h5fe3b3;
+        mem[375] = 24'h5f5e0d;
+        mem[376] = 24'h5ed77c;
+        mem[377] = 24'h5e5001;
+        mem[378] = 24'h5dc79d;
+        mem[379] = 24'h5d3e51;
+        mem[380] = 24'h5cb420;
+        mem[381] = 24'h5c290a;
+        mem[382] = 24'h5b9d11;
+        mem[383] = 24'h5b1035;
+        mem[384] = 24'h5a8279;
+        mem[385] = 24'h59f3dd;
+        mem[386] = 24'h596464;
+        mem[387] = 24'h58d40e;
+        mem[388] = 24'h5842dd;
+        mem[389] = 24'h57b0d2;
+        mem[390] = 24'h571dee;
+        mem[391] = 24'h568a34;
+        mem[392] = 24'h55f5a4;
+        mem[393] = 24'h556040;
+        mem[394] = 24'h54ca0a;
+        mem[395] = 24'h543302;
+        mem[396] = 24'h539b2a;
+        mem[397] = 24'h530284;
+        mem[398] = 24'h526912;
+        mem[399] = 24'h51ced4;
+        mem[400] = 24'h5133cc;
+        mem[401] = 24'h5097fc;
+        mem[402] = 24'h4ffb65;
+        mem[403] = 24'h4f5e08;
+        mem[404] = 24'h4ebfe8;
+        mem[405] = 24'h4e2105;
+        mem[406] = 24'h4d8162;
+        mem[407] = 24'h4ce100;
+        mem[408] = 24'h4c3fdf;
+        mem[409] = 24'h4b9e03;
+        mem[410] = 24'h4afb6c;
+        mem[411] = 24'h4a581c;
+        mem[412] = 24'h49b415;
+        mem[413] = 24'h490f57;
+        mem[414] = 24'h4869e6;
+        mem[415] = 24'h47c3c2;
+        mem[416] = 24'h471cec;
+        mem[417] = 24'h467568;
+        mem[418] = 24'h45cd35;
+        mem[419] = 24'h452456;
+        mem[420] = 24'h447acd;
+        mem[421] = 24'h43d09a;
+        mem[422] = 24'h4325c1;
+        mem[423] = 24'h427a41;
+        mem[424] = 24'h41ce1e;
+        mem[425] = 24'h412158;
+        mem[426] = 24'h4073f2;
+        mem[427] = 24'h3fc5ec;
+        mem[428] = 24'h3f1749;
+        mem[429] = 24'h3e680b;
+        mem[430] = 24'h3db832;
+        mem[431] = 24'h3d07c1;
+        mem[432] = 24'h3c56ba;
+        mem[433] = 24'h3ba51e;
+        mem[434] = 24'h3af2ee;
+        mem[435] = 24'h3a402d;
+        mem[436] = 24'h398cdd;
+        mem[437] = 24'h38d8fe;
+        mem[438] = 24'h382493;
+        mem[439] = 24'h376f9e;
+        mem[440] = 24'h36ba20;
+        mem[441] = 24'h36041a;
+        mem[442] = 24'h354d90;
+        mem[443] = 24'h349682;
+        mem[444] = 24'h33def2;
+        mem[445] = 24'h3326e2;
+        mem[446] = 24'h326e54;
+        mem[447] = 24'h31b54a;
+        mem[448] = 24'h30fbc5;
+        mem[449] = 24'h3041c7;
+        mem[450] = 24'h2f8752;
+        mem[451] = 24'h2ecc68;
+        mem[452] = 24'h2e110a;
+        mem[453] = 24'h2d553b;
+        mem[454] = 24'h2c98fb;
+        mem[455] = 24'h2bdc4e;
+        mem[456] = 24'h2b1f35;
+        mem[457] = 24'h2a61b1;
+        mem[458] = 24'h29a3c4;
+        mem[459] = 24'h28e571;
+        mem[460] = 24'h2826b9;
+        mem[461] = 24'h27679e;
+        mem[462] = 24'h26a821;
+        mem[463] = 24'h25e845;
+        mem[464] = 24'h25280c;
+        mem[465] = 24'h246777;
+        mem[466] = 24'h23a688;
+        mem[467] = 24'h22e541;
+        mem[468] = 24'h2223a5;
+        mem[469] = 24'h2161b3;
+        mem[470] = 24'h209f70;
+        mem[471] = 24'h1fdcdc;
+        mem[472] = 24'h1f19f9;
+        mem[473] = 24'h1e56ca;
+        mem[474] = 24'h1d9350;
+        mem[475] = 24'h1ccf8c;
+        mem[476] = 24'h1c0b82;
+        mem[477] = 24'h1b4733;
+        mem[478] = 24'h1a82a0;
+        mem[479] = 24'h19bdcc;
+        mem[480] = 24'h18f8b8;
+        mem[481] = 24'h183367;
+        mem[482] = 24'h176dda;
+        mem[483] = 24'h16a813;
+        mem[484] = 24'h15e214;
+        mem[485] = 24'h151bdf;
+        mem[486] = 24'h145577;
+        mem[487] = 24'h138edc;
+        mem[488] = 24'h12c810;
+        mem[489] = 24'h120117;
+        mem[490] = 24'h1139f1;
+        mem[491] = 24'h1072a0;
+        mem[492] = 24'hfab27;
+        mem[493] = 24'hee387;
+        mem[494] = 24'he1bc3;
+        mem[495] = 24'hd53db;
+        mem[496] = 24'hc8bd3;
+        mem[497] = 24'hbc3ac;
+        mem[498] = 24'hafb68;
+        mem[499] = 24'ha3309;
+        mem[500] = 24'h96a90;
+        mem[501] = 24'h8a201;
+        mem[502] = 24'h7d95c;
+        mem[503] = 24'h710a3;
+        mem[504] = 24'h647d9;
+        mem[505] = 24'h57f00;
+        mem[506] = 24'h4b619;
+        mem[507] = 24'h3ed27;
+        mem[508] = 24'h3242b;
+        mem[509] = 24'h25b27;
+        mem[510] = 24'h1921d;
+        mem[511] = 24'hc910;
+        mem[512] = 24'h0;
+        mem[513] = 24'hff36f0;
+        mem[514] = 24'hfe6de3;
+        mem[515] = 24'hfda4d9;
+        mem[516] = 24'hfcdbd5;
+        mem[517] = 24'hfc12d9;
+        mem[518] = 24'hfb49e7;
+        mem[519] = 24'hfa8100;
+        mem[520] = 24'hf9b827;
+        mem[521] = 24'hf8ef5d;
+        mem[522] = 24'hf826a4;
+        mem[523] = 24'hf75dff;
+        mem[524] = 24'hf69570;
+        mem[525] = 24'hf5ccf7;
+        mem[526] = 24'hf50498;
+        mem[527] = 24'hf43c54;
+        mem[528] = 24'hf3742d;
+        mem[529] = 24'hf2ac25;
+        mem[530] = 24'hf1e43d;
+        mem[531] = 24'hf11c79;
+        mem[532] = 24'hf054d9;
+        mem[533] = 24'hef8d60;
+        mem[534] = 24'heec60f;
+        mem[535] = 24'hedfee9;
+        mem[536] = 24'hed37f0;
+        mem[537] = 24'hec7124;
+        mem[538] = 24'hebaa89;
+        mem[539] = 24'heae421;
+        mem[540] = 24'hea1dec;
+        mem[541] = 24'he957ed;
+        mem[542] = 24'he89226;
+        mem[543] = 24'he7cc99;
+        mem[544] = 24'he70748;
+        mem[545] = 24'he64234;
+        mem[546] = 24'he57d60;
+        mem[547] = 24'he4b8cd;
+        mem[548] = 24'he3f47e;
+        mem[549] = 24'he33074;
+        mem[550] = 24'he26cb0;
+        mem[551] = 24'he1a936;
+        mem[552] = 24'he0e607;
+        mem[553] = 24'he02324;
+        mem[554] = 24'hdf6090;
+        mem[555] = 24'hde9e4d;
+        mem[556] = 24'hdddc5b;
+        mem[557] = 24'hdd1abf;
+        mem[558] = 24'hdc5978;
+        mem[559] = 24'hdb9889;
+        mem[560] = 24'hdad7f4;
+        mem[561] = 24'hda17bb;
+        mem[562] = 24'hd957df;
+        mem[563] = 24'hd89862;
+        mem[564] = 24'hd7d947;
+        mem[565] = 24'hd71a8f;
+        mem[566] = 24'hd65c3c;
+        mem[567] = 24'hd59e4f;
+        mem[568] = 24'hd4e0cb;
+        mem[569] = 24'hd423b2;
+        mem[570] = 24'hd36705;
+        mem[571] = 24'hd2aac5;
+        mem[572] = 24'hd1eef6;
+        mem[573] = 24'hd13398;
+        mem[574] = 24'hd078ae;
+        mem[575] = 24'hcfbe39;
+        mem[576] = 24'hcf043b;
+        mem[577] = 24'hce4ab6;
+        mem[578] = 24'hcd91ac;
+        mem[579] = 24'hccd91e;
+        mem[580] = 24'hcc210e;
+        mem[581] = 24'hcb697e;
+        mem[582] = 24'hcab270;
+        mem[583] = 24'hc9fbe6;
+        mem[584] = 24'hc945e0;
+        mem[585] = 24'hc89062;
+        mem[586] = 24'hc7db6d;
+        mem[587] = 24'hc72702;
+        mem[588] = 24'hc67323;
+        mem[589] = 24'hc5bfd3;
+        mem[590] = 24'hc50d12;
+        mem[591] = 24'hc45ae2;
+        mem[592] = 24'hc3a946;
+        mem[593] = 24'hc2f83f;
+        mem[594] = 24'hc247ce;
+        mem[595] = 24'hc197f5;
+        mem[596] = 24'hc0e8b7;
+        mem[597] = 24'hc03a14;
+        mem[598] = 24'hbf8c0e;
+        mem[599] = 24'hbedea8;
+        mem[600] = 24'hbe31e2;
+        mem[601] = 24'hbd85bf;
+        mem[602] = 24'hbcda3f;
+        mem[603] = 24'hbc2f66;
+        mem[604] = 24'hbb8533;
+        mem[605] = 24'hbadbaa;
+        mem[606] = 24'hba32cb;
+        mem[607] = 24'hb98a98;
+        mem[608] = 24'hb8e314;
+        mem[609] = 24'hb83c3e;
+        mem[610] = 24'hb7961a;
+        mem[611] = 24'hb6f0a9;
+        mem[612] = 24'hb64beb;
+        mem[613] = 24'hb5a7e4;
+        mem[614] = 24'hb50494;
+        mem[615] = 24'hb461fd;
+        mem[616] = 24'hb3c021;
+        mem[617] = 24'hb31f00;
+        mem[618] = 24'hb27e9e;
+        mem[619] = 24'hb1defb;
+        mem[620] = 24'hb14018;
+        mem[621] = 24'hb0a1f8;
+        mem[622] = 24'hb0049b;
+        mem[623] = 24'haf6804;
+        mem[624] = 24'haecc34;
+        mem[625] = 24'hae312c;
+        mem[626] = 24'had96ee;
+        mem[627] = 24'hacfd7c;
+        mem[628] = 24'hac64d6;
+        mem[629] = 24'habccfe;
+        mem[630] = 24'hab35f6;
+        mem[631] = 24'haa9fc0;
+        mem[632] = 24'haa0a5c;
+        mem[633] = 24'ha975cc;
+        mem[634] = 24'ha8e212;
+        mem[635] = 24'ha84f2e;
+        mem[636] = 24'ha7bd23;
+        mem[637] = 24'ha72bf2;
+        mem[638] = 24'ha69b9c;
+        mem[639] = 24'ha60c23;
+        mem[640] = 24'ha57d87;
+        mem[641] = 24'ha4efcb;
+        mem[642] = 24'ha462ef;
+        mem[643] = 24'ha3d6f6;
+        mem[644] = 24'ha34be0;
+        mem[645] = 24'ha2c1af;
+        mem[646] = 24'ha23863;
+        mem[647] = 24'ha1afff;
+        mem[648] = 24'ha12884;
+        mem[649] = 24'ha0a1f3;
+        mem[650] = 24'ha01c4d;
+        mem[651] = 24'h9f9794;
+        mem[652] = 24'h9f13c9;
+        mem[653] = 24'h9e90ec;
+        mem[654] = 24'h9e0f01;
+        mem[655] = 24'h9d8e06;
+        mem[656] = 24'h9d0dff;
+        mem[657] = 24'h9c8eec;
+        mem[658] = 24'h9c10ce;
+        mem[659] = 24'h9b93a7;
+        mem[660] = 24'h9b1778;
+        mem[661] = 24'h9a9c41;
+        mem[662] = 24'h9a2205;
+        mem[663] = 24'h99a8c4;
+        mem[664] = 24'h993080;
+        mem[665] = 24'h98b939;
+        mem[666] = 24'h9842f1;
+        mem[667] = 24'h97cda9;
+        mem[668] = 24'h975962;
+        mem[669] = 24'h96e61e;
+        mem[670] = 24'h9673dc;
+        mem[671] = 24'h9602a0;
+        mem[672] = 24'h959268;
+        mem[673] = 24'h952337;
+        mem[674] = 24'h94b50e;
+        mem[675] = 24'h9447ee;
+        mem[676] = 24'h93dbd7;
+        mem[677] = 24'h9370cc;
+        mem[678] = 24'h9306cc;
+        mem[679] = 24'h929dd9;
+        mem[680] = 24'h9235f4;
+        mem[681] = 24'h91cf1e;
+        mem[682] = 24'h916957;
+        mem[683] = 24'h9104a2;
+        mem[684] = 24'h90a0fe;
+        mem[685] = 24'h903e6d;
+        mem[686] = 24'h8fdcf0;
+        mem[687] = 24'h8f7c88;
+        mem[688] = 24'h8f1d35;
+        mem[689] = 24'h8ebef9;
+        mem[690] = 24'h8e61d4;
+        mem[691] = 24'h8e05c8;
+        mem[692] = 24'h8daad4;
+        mem[693] = 24'h8d50fb;
+        mem[694] = 24'h8cf83d;
+        mem[695] = 24'h8ca09b;
+        mem[696] = 24'h8c4a15;
+        mem[697] = 24'h8bf4ad;
+        mem[698] = 24'h8ba063;
+        mem[699] = 24'h8b4d38;
+        mem[700] = 24'h8afb2e;
+        mem[701] = 24'h8aaa44;
+        mem[702] = 24'h8a5a7b;
+        mem[703] = 24'h8a0bd5;
+        mem[704] = 24'h89be52;
+        mem[705] = 24'h8971f2;
+        mem[706] = 24'h8926b7;
+        mem[707] = 24'h88dca2;
+        mem[708] = 24'h8893b2;
+        mem[709] = 24'h884be9;
+        mem[710] = 24'h880547;
+        mem[711] = 24'h87bfce;
+        mem[712] = 24'h877b7d;
+        mem[713] = 24'h873855;
+        mem[714] = 24'h86f658;
+        mem[715] = 24'h86b585;
+        mem[716] = 24'h8675dd;
+        mem[717] = 24'h863762;
+        mem[718] = 24'h85fa12;
+        mem[719] = 24'h85bdf0;
+        mem[720] = 24'h8582fc;
+        mem[721] = 24'h854935;
+        mem[722] = 24'h85109e;
+        mem[723] = 24'h84d936;
+        mem[724] = 24'h84a2fd;
+        mem[725] = 24'h846df5;
+        mem[726] = 24'h843a1e;
+        mem[727] = 24'h840779;
+        mem[728] = 24'h83d605;
+        mem[729] = 24'h83a5c4;
+        mem[730] = 24'h8376b5;
+        mem[731] = 24'h8348da;
+        mem[732] = 24'h831c32;
+        mem[733] = 24'h82f0bf;
+        mem[734] = 24'h82c680;
+        mem[735] = 24'h829d76;
+        mem[736] = 24'h8275a2;
+        mem[737] = 24'h824f03;
+        mem[738] = 24'h82299a;
+        mem[739] = 24'h820568;
+        mem[740] = 24'h81e26d;
+        mem[741] = 24'h81c0a9;
+        mem[742] = 24'h81a01c;
+        mem[743] = 24'h8180c8;
+        mem[744] = 24'h8162ab;
+        mem[745] = 24'h8145c7;
+        mem[746] = 24'h812a1b;
+        mem[747] = 24'h810fa9;
+        mem[748] = 24'h80f66f;
+        mem[749] = 24'h80de6f;
+        mem[750] = 24'h80c7a9;
+        mem[751] = 24'h80b21d;
+        mem[752] = 24'h809dca;
+        mem[753] = 24'h808ab2;
+        mem[754] = 24'h8078d5;
+        mem[755] = 24'h806832;
+        mem[756] = 24'h8058ca;
+        mem[757] = 24'h804a9d;
+        mem[758] = 24'h803dab;
+        mem[759] = 24'h8031f5;
+        mem[760] = 24'h802779;
+        mem[761] = 24'h801e3a;
+        mem[762] = 24'h801635;
+        mem[763] = 24'h800f6d;
+        mem[764] = 24'h8009df;
+        mem[765] = 24'h80058e;
+        mem[766] = 24'h800279;
+        mem[767] = 24'h80009f;
+        mem[768] = 24'h800001;
+        mem[769] = 24'h80009f;
+        mem[770] = 24'h800279;
+        mem[771] = 24'h80058e;
+        mem[772] = 24'h8009df;
+        mem[773] = 24'h800f6d;
+        mem[774] = 24'h801635;
+        mem[775] = 24'h801e3a;
+        mem[776] = 24'h802779;
+        mem[777] = 24'h8031f5;
+        mem[778] = 24'h803dab;
+        mem[779] = 24'h804a9d;
+        mem[780] = 24'h8058ca;
+        mem[781] = 24'h806832;
+        mem[782] = 24'h8078d5;
+        mem[783] = 24'h808ab2;
+        mem[784] = 24'h809dca;
+        mem[785] = 24'h80b21d;
+        mem[786] = 24'h80c7a9;
+        mem[787] = 24'h80de6f;
+        mem[788] = 24'h80f66f;
+        mem[789] = 24'h810fa9;
+        mem[790] = 24'h812a1b;
+        mem[791] = 24'h8145c7;
+        mem[792] = 24'h8162ab;
+        mem[793] = 24'h8180c8;
+        mem[794] = 24'h81a01c;
+        mem[795] = 24'h81c0a9;
+        mem[796] = 24'h81e26d;
+        mem[797] = 24'h820568;
+        mem[798] = 24'h82299a;
+        mem[799] = 24'h824f03;
+        mem[800] = 24'h8275a2;
+        mem[801] = 24'h829d76;
+        mem[802] = 24'h82c680;
+        mem[803] = 24'h82f0bf;
+        mem[804] = 24'h831c32;
+        mem[805] = 24'h8348da;
+        mem[806] = 24'h8376b5;
+        mem[807] = 24'h83a5c4;
+        mem[808] = 24'h83d605;
+        mem[809] = 24'h840779;
+        mem[810] = 24'h843a1e;
+        mem[811] = 24'h846df5;
+        mem[812] = 24'h84a2fd;
+        mem[813] = 24'h84d936;
+        mem[814] = 24'h85109e;
+        mem[815] = 24'h854935;
+        mem[816] = 24'h8582fc;
+        mem[817] = 24'h85bdf0;
+        mem[818] = 24'h85fa12;
+        mem[819] = 24'h863762;
+        mem[820] = 24'h8675dd;
+        mem[821] = 24'h86b585;
+        mem[822] = 24'h86f658;
+        mem[823] = 24'h873855;
+        mem[824] = 24'h877b7d;
+        mem[825] = 24'h87bfce;
+        mem[826] = 24'h880547;
+        mem[827] = 24'h884be9;
+        mem[828] = 24'h8893b2;
+        mem[829] = 24'h88dca2;
+        mem[830] = 24'h8926b7;
+        mem[831] = 24'h8971f2;
+        mem[832] = 24'h89be52;
+        mem[833] = 24'h8a0bd5;
+        mem[834] = 24'h8a5a7b;
+        mem[835] = 24'h8aaa44;
+        mem[836] = 24'h8afb2e;
+        mem[837] = 24'h8b4d38;
+        mem[838] = 24'h8ba063;
+        mem[839] = 24'h8bf4ad;
+        mem[840] = 24'h8c4a15;
+        mem[841] = 24'h8ca09b;
+        mem[842] = 24'h8cf83d;
+        mem[843] = 24'h8d50fb;
+        mem[844] = 24'h8daad4;
+        mem[845] = 24'h8e05c8;
+        mem[846] = 24'h8e61d4;
+        mem[847] = 24'h8ebef9;
+        mem[848] = 24'h8f1d35;
+        mem[849] = 24'h8f7c88;
+        mem[850] = 24'h8fdcf0;
+        mem[851] = 24'h903e6d;
+        mem[852] = 24'h90a0fe;
+        mem[853] = 24'h9104a2;
+        mem[854] = 24'h916957;
+        mem[855] = 24'h91cf1e;
+        mem[856] = 24'h9235f4;
+        mem[857] = 24'h929dd9;
+        mem[858] = 24'h9306cc;
+        mem[859] = 24'h9370cc;
+        mem[860] = 24'h93dbd7;
+        mem[861] = 24'h9447ee;
+        mem[862] = 24'h94b50e;
+        mem[863] = 24'h952337;
+        mem[864] = 24'h959268;
+        mem[865] = 24'h9602a0;
+        mem[866] = 24'h9673dc;
+        mem[867] = 24'h96e61e;
+        mem[868] = 24'h975962;
+        mem[869] = 24'h97cda9;
+        mem[870] = 24'h9842f1;
+        mem[871] = 24'h98b939;
+        mem[872] = 24'h993080;
+        mem[873] = 24'h99a8c4;
+        mem[874] = 24'h9a2205;
+        mem[875] = 24'h9a9c41;
+        mem[876] = 24'h9b1778;
+        mem[877] = 24'h9b93a7;
+        mem[878] = 24'h9c10ce;
+        mem[879] = 24'h9c8eec;
+        mem[880] = 24'h9d0dff;
+        mem[881] = 24'h9d8e06;
+        mem[882] = 24'h9e0f01;
+        mem[883] = 24'h9e90ec;
+        mem[884] = 24'h9f13c9;
+        mem[885] = 24'h9f9794;
+        mem[886] = 24'ha01c4d;
+        mem[887] = 24'ha0a1f3;
+        mem[888] = 24'ha12884;
+        mem[889] = 24'ha1afff;
+        mem[890] = 24'ha23863;
+        mem[891] = 24'ha2c1af;
+        mem[892] = 24'ha34be0;
+        mem[893] = 24'ha3d6f6;
+        mem[894] = 24'ha462ef;
+        mem[895] = 24'ha4efcb;
+        mem[896] = 24'ha57d87;
+        mem[897] = 24'ha60c23;
+        mem[898] = 24'ha69b9c;
+        mem[899] = 24'ha72bf2;
+        mem[900] = 24'ha7bd23;
+        mem[901] = 24'ha84f2e;
+        mem[902] = 24'ha8e212;
+        mem[903] = 24'ha975cc;
+        mem[904] = 24'haa0a5c;
+        mem[905] = 24'haa9fc0;
+        mem[906] = 24'hab35f6;
+        mem[907] = 24'habccfe;
+        mem[908] = 24'hac64d6;
+        mem[909] = 24'hacfd7c;
+        mem[910] = 24'had96ee;
+        mem[911] = 24'hae312c;
+        mem[912] = 24'haecc34;
+        mem[913] = 24'haf6804;
+        mem[914] = 24'hb0049b;
+        mem[915] = 24'hb0a1f8;
+        mem[916] = 24'hb14018;
+        mem[917] = 24'hb1defb;
+        mem[918] = 24'hb27e9e;
+        mem[919] = 24'hb31f00;
+        mem[920] = 24'hb3c021;
+        mem[921] = 24'hb461fd;
+        mem[922] = 24'hb50494;
+        mem[923] = 24'hb5a7e4;
+        mem[924] = 24'hb64beb;
+        mem[925] = 24'hb6f0a9;
+        mem[926] = 24'hb7961a;
+        mem[927] = 24'hb83c3e;
+        mem[928] = 24'hb8e314;
+        mem[929] = 24'hb98a98;
+        mem[930] = 24'hba32cb;
+        mem[931] = 24'hbadbaa;
+        mem[932] = 24'hbb8533;
+        mem[933] = 24'hbc2f66;
+        mem[934] = 24'hbcda3f;
+        mem[935] = 24'hbd85bf;
+        mem[936] = 24'hbe31e2;
+        mem[937] = 24'hbedea8;
+        mem[938] = 24'hbf8c0e;
+        mem[939] = 24'hc03a14;
+        mem[940] = 24'hc0e8b7;
+        mem[941] = 24'hc197f5;
+        mem[942] = 24'hc247ce;
+        mem[943] = 24'hc2f83f;
+        mem[944] = 24'hc3a946;
+        mem[945] = 24'hc45ae2;
+        mem[946] = 24'hc50d12;
+        mem[947] = 24'hc5bfd3;
+        mem[948] = 24'hc67323;
+        mem[949] = 24'hc72702;
+        mem[950] = 24'hc7db6d;
+        mem[951] = 24'hc89062;
+        mem[952] = 24'hc945e0;
+        mem[953] = 24'hc9fbe6;
+        mem[954] = 24'hcab270;
+        mem[955] = 24'hcb697e;
+        mem[956] = 24'hcc210e;
+        mem[957] = 24'hccd91e;
+        mem[958] = 24'hcd91ac;
+        mem[959] = 24'hce4ab6;
+        mem[960] = 24'hcf043b;
+        mem[961] = 24'hcfbe39;
+        mem[962] = 24'hd078ae;
+        mem[963] = 24'hd13398;
+        mem[964] = 24'hd1eef6;
+        mem[965] = 24'hd2aac5;
+        mem[966] = 24'hd36705;
+        mem[967] = 24'hd423b2;
+        mem[968] = 24'hd4e0cb;
+        mem[969] = 24'hd59e4f;
+        mem[970] = 24'hd65c3c;
+        mem[971] = 24'hd71a8f;
+        mem[972] = 24'hd7d947;
+        mem[973] = 24'hd89862;
+        mem[974] = 24'hd957df;
+        mem[975] = 24'hda17bb;
+        mem[976] = 24'hdad7f4;
+        mem[977] = 24'hdb9889;
+        mem[978] = 24'hdc5978;
+        mem[979] = 24'hdd1abf;
+        mem[980] = 24'hdddc5b;
+        mem[981] = 24'hde9e4d;
+        mem[982] = 24'hdf6090;
+        mem[983] = 24'he02324;
+        mem[984] = 24'he0e607;
+        mem[985] = 24'he1a936;
+        mem[986] = 24'he26cb0;
+        mem[987] = 24'he33074;
+        mem[988] = 24'he3f47e;
+        mem[989] = 24'he4b8cd;
+        mem[990] = 24'he57d60;
+        mem[991] = 24'he64234;
+        mem[992] = 24'he70748;
+        mem[993] = 24'he7cc99;
+        mem[994] = 24'he89226;
+        mem[995] = 24'he957ed;
+        mem[996] = 24'hea1dec;
+        mem[997] = 24'heae421;
+        mem[998] = 24'hebaa89;
+        mem[999] = 24'hec7124;
+        mem[1000] = 24'hed37f0;
+        mem[1001] = 24'hedfee9;
+        mem[1002] = 24'heec60f;
+        mem[1003] = 24'hef8d60;
+        mem[1004] = 24'hf054d9;
+        mem[1005] = 24'hf11c79;
+        mem[1006] = 24'hf1e43d;
+        mem[1007] = 24'hf2ac25;
+        mem[1008] = 24'hf3742d;
+        mem[1009] = 24'hf43c54;
+        mem[1010] = 24'hf50498;
+        mem[1011] = 24'hf5ccf7;
+        mem[1012] = 24'hf69570;
+        mem[1013] = 24'hf75dff;
+        mem[1014] = 24'hf826a4;
+        mem[1015] = 24'hf8ef5d;
+        mem[1016] = 24'hf9b827;
+        mem[1017] = 24'hfa8100;
+        mem[1018] = 24'hfb49e7;
+        mem[1019] = 24'hfc12d9;
+        mem[1020] = 24'hfcdbd5;
+        mem[1021] = 24'hfda4d9;
+        mem[1022] = 24'hfe6de3;
+        mem[1023] = 24'hff36f0;
+    end
+    
+    always @(posedge clock) begin
+        word <= mem[address[9:0]];
+        in_range <= {1'b0, address} < 17'd1024;
+    end
+    
+    always @(*) data = in_range ? word : 24'd0;
+endmodule // encspeed_ecc$gatherer$rom_c$rom
+
+
+module encspeed_ecc$gatherer$rom_s(clock,m,m0,data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] m;
+    input wire  [15:0] m0;
+    output reg  [23:0] data;
+    
+    // Constant declarations
+    localparam  k_minus_one = 16'h3ff;
+    localparam  k_mod = 16'h400;
+    
+    // Stub signals
+    reg  rom$clock;
+    reg  [15:0] rom$address;
+    wire  [23:0] rom$data;
+    
+    // Local signals
+    reg  [15:0] limit;
+    reg  [15:0] sum;
+    
+    // Sub module instances
+    encspeed_ecc$gatherer$rom_s$rom rom(
+        .clock(rom$clock),
+        .address(rom$address),
+        .data(rom$data)
+    );
+    
+    // Update code
+    always @(*) begin
+        rom$clock = clock;
+        limit = k_minus_one - m;
+        sum = m + m0;
+        rom$address = sum;
+        if (m0 > limit) begin
+            rom$address = sum - k_mod;
+        end
+        data = rom$data;
+    end
+    
+endmodule // encspeed_ecc$gatherer$rom_s
+
+
+module encspeed_ecc$gatherer$rom_s$rom(clock,address,data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] address;
+    output reg  [23:0] data;
+    
+    // Update code (custom)
+    reg [23:0] mem [1023:0];
+    reg [23:0] word;
+    reg in_range;
+    
+    initial begin
+        mem[0] = 24'h0;
+        mem[1] = 24'hc910;
+        mem[2] = 24'h1921d;
+        mem[3] = 24'h25b27;
+        mem[4] = 24'h3242b;
+        mem[5] = 24'h3ed27;
+        mem[6] = 24'h4b619;
+        mem[7] = 24'h57f00;
+        mem[8] = 24'h647d9;
+        mem[9] = 24'h710a3;
+        mem[10] = 24'h7d95c;
+        mem[11] = 24'h8a201;
+        mem[12] = 24'h96a90;
+        mem[13] = 24'ha3309;
+        mem[14] = 24'hafb68;
+        mem[15] = 24'hbc3ac;
+        mem[16] = 24'hc8bd3;
+        mem[17] = 24'hd53db;
+        mem[18] = 24'he1bc3;
+        mem[19] = 24'hee387;
+        mem[20] = 24'hfab27;
+        mem[21] = 24'h1072a0;
+        mem[22] = 24'h1139f1;
+        mem[23] = 24'h120117;
+        mem[24] = 24'h12c810;
+        mem[25] = 24'h138edc;
+        mem[26] = 24'h145577;
+        mem[27] = 24'h151bdf;
+        mem[28] = 24'h15e214;
+        mem[29] = 24'h16a813;
+        mem[30] = 24'h176dda;
+        mem[31] = 24'h183367;
+        mem[32] = 24'h18f8b8;
+        mem[33] = 24'h19bdcc;
+        mem[34] = 24'h1a82a0;
+        mem[35] = 24'h1b4733;
+        mem[36] = 24'h1c0b82;
+        mem[37] = 24'h1ccf8c;
+        mem[38] = 24'h1d9350;
+        mem[39] = 24'h1e56ca;
+        mem[40] = 24'h1f19f9;
+        mem[41] = 24'h1fdcdc;
+        mem[42] = 24'h209f70;
+        mem[43] = 24'h2161b3;
+        mem[44] = 24'h2223a5;
+        mem[45] = 24'h22e541;
+        mem[46] = 24'h23a688;
+        mem[47] = 24'h246777;
+        mem[48] = 24'h25280c;
+        mem[49] = 24'h25e845;
+        mem[50] = 24'h26a821;
+        mem[51] = 24'h27679e;
+        mem[52] = 24'h2826b9;
+        mem[53] = 24'h28e571;
+        mem[54] = 24'h29a3c4;
+        mem[55] = 24'h2a61b1;
+        mem[56] = 24'h2b1f35;
+        mem[57] = 24'h2bdc4e;
+        mem[58] = 24'h2c98fb;
+        mem[59] = 24'h2d553b;
+        mem[60] = 24'h2e110a;
+        mem[61] = 24'h2ecc68;
+        mem[62] = 24'h2f8752;
+        mem[63] = 24'h3041c7;
+        mem[64] = 24'h30fbc5;
+        mem[65] = 24'h31b54a;
+        mem[66] = 24'h326e54;
+        mem[67] = 24'h3326e2;
+        mem[68] = 24'h33def2;
+        mem[69] = 24'h349682;
+        mem[70] = 24'h354d90;
+        mem[71] = 24'h36041a;
+        mem[72] = 24'h36ba20;
+        mem[73] = 24'h376f9e;
+        mem[74] = 24'h382493;
+        mem[75] = 24'h38d8fe;
+        mem[76] = 24'h398cdd;
+        mem[77] = 24'h3a402d;
+        mem[78] = 24'h3af2ee;
+        mem[79] = 24'h3ba51e;
+        mem[80] = 24'h3c56ba;
+        mem[81] = 24'h3d07c1;
+        mem[82] = 24'h3db832;
+        mem[83] = 24'h3e680b;
+        mem[84] = 24'h3f1749;
+        mem[85] = 24'h3fc5ec;
+        mem[86] = 24'h4073f2;
+        mem[87] = 24'h412158;
+        mem[88] = 24'h41ce1e;
+        mem[89] = 24'h427a41;
+        mem[90] = 24'h4325c1;
+        mem[91] = 24'h43d09a;
+        mem[92] = 24'h447acd;
+        mem[93] = 24'h452456;
+        mem[94] = 24'h45cd35;
+        mem[95] = 24'h467568;
+        mem[96] = 24'h471cec;
+        mem[97] = 24'h47c3c2;
+        mem[98] = 24'h4869e6;
+        mem[99] = 24'h490f57;
+        mem[100] = 24'h49b415;
+        mem[101] = 24'h4a581c;
+        mem[102] = 24'h4afb6c;
+        mem[103] = 24'h4b9e03;
+        mem[104] = 24'h4c3fdf;
+        mem[105] = 24'h4ce100;
+        mem[106] = 24'h4d8162;
+        mem[107] = 24'h4e2105;
+        mem[108] = 24'h4ebfe8;
+        mem[109] = 24'h4f5e08;
+        mem[110] = 24'h4ffb65;
+        mem[111] = 24'h5097fc;
+        mem[112] = 24'h5133cc;
+        mem[113] = 24'h51ced4;
+        mem[114] = 24'h526912;
+        mem[115] = 24'h530284;
+        mem[116] = 24'h539b2a;
+        mem[117] = 24'h543302;
+        mem[118] = 24'h54ca0a;
+        mem[119] = 24'h556040;
+        mem[120] = 24'h55f5a4;
+        mem[121] = 24'h568a34;
+        mem[122] = 24'h571dee;
+        mem[123] = 24'h57b0d2;
+        mem[124] = 24'h5842dd;
+        mem[125] = 24'h58d40e;
+        mem[126] = 24'h596464;
+        mem[127] = 24'h59f3dd;
+        mem[128] = 24'h5a8279;
+        mem[129] = 24'h5b1035;
+        mem[130] = 24'h5b9d11;
+        mem[131] = 24'h5c290a;
+        mem[132] = 24'h5cb420;
+        mem[133] = 24'h5d3e51;
+        mem[134] = 24'h5dc79d;
+        mem[135] = 24'h5e5001;
+        mem[136] = 24'h5ed77c;
+        mem[137] = 24'h5f5e0d;
+        mem[138] = 24'h5fe3b3;
+        mem[139] = 24'h60686c;
+        mem[140] = 24'h60ec37;
+        mem[141] = 24'h616f14;
+        mem[142] = 24'h61f0ff;
+        mem[143] = 24'h6271fa;
+        mem[144] = 24'h62f201;
+        mem[145] = 24'h637114;
+        mem[146] = 24'h63ef32;
+        mem[147] = 24'h646c59;
+        mem[148] = 24'h64e888;
+        mem[149] = 24'h6563bf;
+        mem[150] = 24'h65ddfb;
+        mem[151] = 24'h66573c;
+        mem[152] = 24'h66cf80;
+        mem[153] = 24'h6746c7;
+        mem[154] = 24'h67bd0f;
+        mem[155] = 24'h683257;
+        mem[156] = 24'h68a69e;
+        mem[157] = 24'h6919e2;
+        mem[158] = 24'h698c24;
+        mem[159] = 24'h69fd60;
+        mem[160] = 24'h6a6d98;
+        mem[161] = 24'h6adcc9;
+        mem[162] = 24'h6b4af2;
+        mem[163] = 24'h6bb812;
+        mem[164] = 24'h6c2429;
+        mem[165] = 24'h6c8f34;
+        mem[166] = 24'h6cf934;
+        mem[167] = 24'h6d6227;
+        mem[168] = 24'h6dca0c;
+        mem[169] = 24'h6e30e2;
+        mem[170] = 24'h6e96a9;
+        mem[171] = 24'h6efb5e;
+        mem[172] = 24'h6f5f02;
+        mem[173] = 24'h6fc193;
+        mem[174] = 24'h702310;
+        mem[175] = 24'h708378;
+        mem[176] = 24'h70e2cb;
+        mem[177] = 24'h714107;
+        mem[178] = 24'h719e2c;
+        mem[179] = 24'h71fa38;
+        mem[180] = 24'h72552c;
+        mem[181] = 24'h72af05;
+        mem[182] = 24'h7307c3;
+        mem[183] = 24'h735f65;
+        mem[184] = 24'h73b5eb;
+        mem[185] = 24'h740b53;
+        mem[186] = 24'h745f9d;
+        mem[187] = 24'h74b2c8;
+        mem[188] = 24'h7504d2;
+        mem[189] = 24'h7555bc;
+        mem[190] = 24'h75a585;
+        mem[191] = 24'h75f42b;
+        mem[192] = 24'h7641ae;
+        mem[193] = 24'h768e0e;
+        mem[194] = 24'h76d949;
+        mem[195] = 24'h77235e;
+        mem[196] = 24'h776c4e;
+        mem[197] = 24'h77b417;
+        mem[198] = 24'h77fab9;
+        mem[199] = 24'h784032;
+        mem[200] = 24'h788483;
+        mem[201] = 24'h78c7ab;
+        mem[202] = 24'h7909a8;
+        mem[203] = 24'h794a7b;
+        mem[204] = 24'h798a23;
+        mem[205] = 24'h79c89e;
+        mem[206] = 24'h7a05ee;
+        mem[207] = 24'h7a4210;
+        mem[208] = 24'h7a7d04;
+        mem[209] = 24'h7ab6cb;
+        mem[210] = 24'h7aef62;
+        mem[211] = 24'h7b26ca;
+        mem[212] = 24'h7b5d03;
+        mem[213] = 24'h7b920b;
+        mem[214] = 24'h7bc5e2;
+        mem[215] = 24'h7bf887;
+        mem[216] = 24'h7c29fb;
+        mem[217] = 24'h7c5a3c;
+        mem[218] = 24'h7c894b;
+        mem[219] = 24'h7cb726;
+        mem[220] = 24'h7ce3ce;
+        mem[221] = 24'h7d0f41;
+        mem[222] = 24'h7d3980;
+        mem[223] = 24'h7d628a;
+        mem[224] = 24'h7d8a5e;
+        mem[225] = 24'h7db0fd;
+        mem[226] = 24'h7dd666;
+        mem[227] = 24'h7dfa98;
+        mem[228] = 24'h7e1d93;
+        mem[229] = 24'h7e3f57;
+        mem[230] = 24'h7e5fe4;
+        mem[231] = 24'h7e7f38;
+        mem[232] = 24'h7e9d55;
+        mem[233] = 24'h7eba39;
+        mem[234] = 24'h7ed5e5;
+        mem[235] = 24'h7ef057;
+        mem[236] = 24'h7f0991;
+        mem[237] = 24'h7f2191;
+        mem[238] = 24'h7f3857;
+        mem[239] = 24'h7f4de3;
+        mem[240] = 24'h7f6236;
+        mem[241] = 24'h7f754e;
+        mem[242] = 24'h7f872b;
+        mem[243] = 24'h7f97ce;
+        mem[244] = 24'h7fa736;
+        mem[245] = 24'h7fb563;
+        mem[246] = 24'h7fc255;
+        mem[247] = 24'h7fce0b;
+        mem[248] = 24'h7fd887;
+        mem[249] = 24'h7fe1c6;
+        mem[250] = 24'h7fe9cb;
+        mem[251] = 24'h7ff093;
+        mem[252] = 24'h7ff621;
+        mem[253] = 24'h7ffa72;
+        mem[254] = 24'h7ffd87;
+        mem[255] = 24'h7fff61;
+        mem[256] = 24'h7fffff;
+        mem[257] = 24'h7fff61;
+        mem[258] = 24'h7ffd87;
+        mem[259] = 24'h7ffa72;
+        mem[260] = 24'h7ff621;
+        mem[261] = 24'h7ff093;
+        mem[262] = 24'h7fe9cb;
+        mem[263] = 24'h7fe1c6;
+        mem[264] = 24'h7fd887;
+        mem[265] = 24'h7fce0b;
+        mem[266] = 24'h7fc255;
+        mem[267] = 24'h7fb563;
+        mem[268] = 24'h7fa736;
+        mem[269] = 24'h7f97ce;
+        mem[270] = 24'h7f872b;
+        mem[271] = 24'h7f754e;
+        mem[272] = 24'h7f6236;
+        mem[273] = 24'h7f4de3;
+        mem[274] = 24'h7f3857;
+        mem[275] = 24'h7f2191;
+        mem[276] = 24'h7f0991;
+        mem[277] = 24'h7ef057;
+        mem[278] = 24'h7ed5e5;
+        mem[279] = 24'h7eba39;
+        mem[280] = 24'h7e9d55;
+        mem[281] = 24'h7e7f38;
+        mem[282] = 24'h7e5fe4;
+        mem[283] = 24'h7e3f57;
+        mem[284] = 24'h7e1d93;
+        mem[285] = 24'h7dfa98;
+        mem[286] = 24'h7dd666;
+        mem[287] = 24'h7db0fd;
+        mem[288] = 24'h7d8a5e;
+        mem[289] = 24'h7d628a;
+        mem[290] = 24'h7d3980;
+        mem[291] = 24'h7d0f41;
+        mem[292] = 24'h7ce3ce;
+        mem[293] = 24'h7cb726;
+        mem[294] = 24'h7c894b;
+        mem[295] = 24'h7c5a3c;
+        mem[296] = 24'h7c29fb;
+        mem[297] = 24'h7bf887;
+        mem[298] = 24'h7bc5e2;
+        mem[299] = 24'h7b920b;
+        mem[300] = 24'h7b5d03;
+        mem[301] = 24'h7b26ca;
+        mem[302] = 24'h7aef62;
+        mem[303] = 24'h7ab6cb;
+        mem[304] = 24'h7a7d04;
+        mem[305] = 24'h7a4210;
+        mem[306] = 24'h7a05ee;
+        mem[307] = 24'h79c89e;
+        mem[308] = 24'h798a23;
+        mem[309] = 24'h794a7b;
+        mem[310] = 24'h7909a8;
+        mem[311] = 24'h78c7ab;
+        mem[312] = 24'h788483;
+        mem[313] = 24'h784032;
+        mem[314] = 24'h77fab9;
+        mem[315] = 24'h77b417;
+        mem[316] = 24'h776c4e;
+        mem[317] = 24'h77235e;
+        mem[318] = 24'h76d949;
+        mem[319] = 24'h768e0e;
+        mem[320] = 24'h7641ae;
+        mem[321] = 24'h75f42b;
+        mem[322] = 24'h75a585;
+        mem[323] = 24'h7555bc;
+        mem[324] = 24'h7504d2;
+        mem[325] = 24'h74b2c8;
+        mem[326] = 24'h745f9d;
+        mem[327] = 24'h740b53;
+        mem[328] = 24'h73b5eb;
+        mem[329] = 24'h735f65;
+        mem[330] = 24'h7307c3;
+        mem[331] = 24'h72af05;
+        mem[332] = 24'h72552c;
+        mem[333] = 24'h71fa38;
+        mem[334] = 24'h719e2c;
+        mem[335] = 24'h714107;
+        mem[336] = 24'h70e2cb;
+        mem[337] = 24'h708378;
+        mem[338] = 24'h702310;
+        mem[339] = 24'h6fc193;
+        mem[340] = 24'h6f5f02;
+        mem[341] = 24'h6efb5e;
+        mem[342] = 24'h6e96a9;
+        mem[343] = 24'h6e30e2;
+        mem[344] = 24'h6dca0c;
+        mem[345] = 24'h6d6227;
+        mem[346] = 24'h6cf934;
+        mem[347] = 24'h6c8f34;
+        mem[348] = 24'h6c2429;
+        mem[349] = 24'h6bb812;
+        mem[350] = 24'h6b4af2;
+        mem[351] = 24'h6adcc9;
+        mem[352] = 24'h6a6d98;
+        mem[353] = 24'h69fd60;
+        mem[354] = 24'h698c24;
+        mem[355] = 24'h6919e2;
+        mem[356] = 24'h68a69e;
+        mem[357] = 24'h683257;
+        mem[358] = 24'h67bd0f;
+        mem[359] = 24'h6746c7;
+        mem[360] = 24'h66cf80;
+        mem[361] = 24'h66573c;
+        mem[362] = 24'h65ddfb;
+        mem[363] = 24'h6563bf;
+        mem[364] = 24'h64e888;
+        mem[365] = 24'h646c59;
+        mem[366] = 24'h63ef32;
+        mem[367] = 24'h637114;
+        mem[368] = 24'h62f201;
+        mem[369] = 24'h6271fa;
+        mem[370] = 24'h61f0ff;
+        mem[371] = 24'h616f14;
+        mem[372] = 24'h60ec37;
+        mem[373] = 24'h60686c;
+        mem[374] = 24'h5fe3b3;
+        mem[375] = 24'h5f5e0d;
+        mem[376] = 24'h5ed77c;
+        mem[377] = 24'h5e5001;
+        mem[378] = 24'h5dc79d;
+        mem[379] = 24'h5d3e51;
+        mem[380] = 24'h5cb420;
+        mem[381] = 24'h5c290a;
+        mem[382] = 24'h5b9d11;
+        mem[383] = 24'h5b1035;
+        mem[384] = 24'h5a8279;
+        mem[385] = 24'h59f3dd;
+        mem[386] = 24'h596464;
+        mem[387] = 24'h58d40e;
+        mem[388] = 24'h5842dd;
+        mem[389] = 24'h57b0d2;
+        mem[390] = 24'h571dee;
+        mem[391] = 24'h568a34;
+        mem[392] = 24'h55f5a4;
+        mem[393] = 24'h556040;
+        mem[394] = 24'h54ca0a;
+        mem[395] = 24'h543302;
+        mem[396] = 24'h539b2a;
+        mem[397] = 24'h530284;
+        mem[398] = 24'h526912;
+        mem[399] = 24'h51ced4;
+        mem[400] = 24'h5133cc;
+        mem[401] = 24'h5097fc;
+        mem[402] = 24'h4ffb65;
+        mem[403] = 24'h4f5e08;
+        mem[404] = 24'h4ebfe8;
+        mem[405] = 24'h4e2105;
+        mem[406] = 24'h4d8162;
+        mem[407] = 24'h4ce100;
+        mem[408] = 24'h4c3fdf;
+        mem[409] = 24'h4b9e03;
+        mem[410] = 24'h4afb6c;
+        mem[411] = 24'h4a581c;
+        mem[412] = 24'h49b415;
+        mem[413] = 24'h490f57;
+        mem[414] = 24'h4869e6;
+        mem[415] = 24'h47c3c2;
+        mem[416] = 24'h471cec;
+        mem[417] = 24'h467568;
+        mem[418] = 24'h45cd35;
+        mem[419] = 24'h452456;
+        mem[420] = 24'h447acd;
+        mem[421] = 24'h43d09a;
+        mem[422] = 24'h4325c1;
+        mem[423] = 24'h427a41;
+        mem[424] = 24'h41ce1e;
+        mem[425] = 24'h412158;
+        mem[426] = 24'h4073f2;
+        mem[427] = 24'h3fc5ec;
+        mem[428] = 24'h3f1749;
+        mem[429] = 24'h3e680b;
+        mem[430] = 24'h3db832;
+        mem[431] = 24'h3d07c1;
+        mem[432] = 24'h3c56ba;
+        mem[433] = 24'h3ba51e;
+        mem[434] = 24'h3af2ee;
+        mem[435] = 24'h3a402d;
+        mem[436] = 24'h398cdd;
+        mem[437] = 24'h38d8fe;
+        mem[438] = 24'h382493;
+        mem[439] = 24'h376f9e;
+        mem[440] = 24'h36ba20;
+        mem[441] = 24'h36041a;
+        mem[442] = 24'h354d90;
+        mem[443] = 24'h349682;
+        mem[444] = 24'h33def2;
+        mem[445] = 24'h3326e2;
+        mem[446] = 24'h326e54;
+        mem[447] = 24'h31b54a;
+        mem[448] = 24'h30fbc5;
+        mem[449] = 24'h3041c7;
+        mem[450] = 24'h2f8752;
+        mem[451] = 24'h2ecc68;
+        mem[452] = 24'h2e110a;
+        mem[453] = 24'h2d553b;
+        mem[454] = 24'h2c98fb;
+        mem[455] = 24'h2bdc4e;
+        mem[456] = 24'h2b1f35;
+        mem[457] = 24'h2a61b1;
+        mem[458] = 24'h29a3c4;
+        mem[459] = 24'h28e571;
+        mem[460] = 24'h2826b9;
+        mem[461] = 24'h27679e;
+        mem[462] = 24'h26a821;
+        mem[463] = 24'h25e845;
+        mem[464] = 24'h25280c;
+        mem[465] = 24'h246777;
+        mem[466] = 24'h23a688;
+        mem[467] = 24'h22e541;
+        mem[468] = 24'h2223a5;
+        mem[469] = 24'h2161b3;
+        mem[470] = 24'h209f70;
+        mem[471] = 24'h1fdcdc;
+        mem[472] = 24'h1f19f9;
+        mem[473] = 24'h1e56ca;
+        mem[474] = 24'h1d9350;
+        mem[475] = 24'h1ccf8c;
+        mem[476] = 24'h1c0b82;
+        mem[477] = 24'h1b4733;
+        mem[478] = 24'h1a82a0;
+        mem[479] = 24'h19bdcc;
+        mem[480] = 24'h18f8b8;
+        mem[481] = 24'h183367;
+        mem[482] = 24'h176dda;
+        mem[483] = 24'h16a813;
+        mem[484] = 24'h15e214;
+        mem[485] = 24'h151bdf;
+        mem[486] = 24'h145577;
+        mem[487] = 24'h138edc;
+        mem[488] = 24'h12c810;
+        mem[489] = 24'h120117;
+        mem[490] = 24'h1139f1;
+        mem[491] = 24'h1072a0;
+        mem[492] = 24'hfab27;
+        mem[493] = 24'hee387;
+        mem[494] = 24'he1bc3;
+        mem[495] = 24'hd53db;
+        mem[496] = 24'hc8bd3;
+        mem[497] = 24'hbc3ac;
+        mem[498] = 24'hafb68;
+        mem[499] = 24'ha3309;
+        mem[500] = 24'h96a90;
+        mem[501] = 24'h8a201;
+        mem[502] = 24'h7d95c;
+        mem[503] = 24'h710a3;
+        mem[504] = 24'h647d9;
+        mem[505] = 24'h57f00;
+        mem[506] = 24'h4b619;
+        mem[507] = 24'h3ed27;
+        mem[508] = 24'h3242b;
+        mem[509] = 24'h25b27;
+        mem[510] = 24'h1921d;
+        mem[511] = 24'hc910;
+        mem[512] = 24'h0;
+        mem[513] = 24'hff36f0;
+        mem[514] = 24'hfe6de3;
+        mem[515] = 24'hfda4d9;
+        mem[516] = 24'hfcdbd5;
+        mem[517] = 24'hfc12d9;
+        mem[518] = 24'hfb49e7;
+        mem[519] = 24'hfa8100;
+        mem[520] = 24'hf9b827;
+        mem[521] = 24'hf8ef5d;
+        mem[522] = 24'hf826a4;
+        mem[523] = 24'hf75dff;
+        mem[524] = 24'hf69570;
+        mem[525] = 24'hf5ccf7;
+        mem[526] = 24'hf50498;
+        mem[527] = 24'hf43c54;
+        mem[528] = 24'hf3742d;
+        mem[529] = 24'hf2ac25;
+        mem[530] = 24'hf1e43d;
+        mem[531] = 24'hf11c79;
+        mem[532] = 24'hf054d9;
+        mem[533] = 24'hef8d60;
+        mem[534] = 24'heec60f;
+        mem[535] = 24'hedfee9;
+        mem[536] = 24'hed37f0;
+        mem[537] = 24'hec7124;
+        mem[538] = 24'hebaa89;
+        mem[539] = 24'heae421;
+        mem[540] = 24'hea1dec;
+        mem[541] = 24'he957ed;
+        mem[542] = 24'he89226;
+        mem[543] = 24'he7cc99;
+        mem[544] = 24'he70748;
+        mem[545] = 24'he64234;
+        mem[546] = 24'he57d60;
+        mem[547] = 24'he4b8cd;
+        mem[548] = 24'he3f47e;
+        mem[549] = 24'he33074;
+        mem[550] = 24'he26cb0;
+        mem[551] = 24'he1a936;
+        mem[552] = 24'he0e607;
+        mem[553] = 24'he02324;
+        mem[554] = 24'hdf6090;
+        mem[555] = 24'hde9e4d;
+        mem[556] = 24'hdddc5b;
+        mem[557] = 24'hdd1abf;
+        mem[558] = 24'hdc5978;
+        mem[559] = 24'hdb9889;
+        mem[560] = 24'hdad7f4;
+        mem[561] = 24'hda17bb;
+        mem[562] = 24'hd957df;
+        mem[563] = 24'hd89862;
+        mem[564] = 24'hd7d947;
+        mem[565] = 24'hd71a8f;
+        mem[566] = 24'hd65c3c;
+        mem[567] = 24'hd59e4f;
+        mem[568] = 24'hd4e0cb;
+        mem[569] = 24'hd423b2;
+        mem[570] = 24'hd36705;
+        mem[571] = 24'hd2aac5;
+        mem[572] = 24'hd1eef6;
+        mem[573] = 24'hd13398;
+        mem[574] = 24'hd078ae;
+        mem[575] = 24'hcfbe39;
+        mem[576] = 24'hcf043b;
+        mem[577] = 24'hce4ab6;
+        mem[578] = 24'hcd91ac;
+        mem[579] = 24'hccd91e;
+        mem[580] = 24'hcc210e;
+        mem[581] = 24'hcb697e;
+        mem[582] = 24'hcab270;
+        mem[583] = 24'hc9fbe6;
+        mem[584] = 24'hc945e0;
+        mem[585] = 24'hc89062;
+        mem[586] = 24'hc7db6d;
+        mem[587] = 24'hc72702;
+        mem[588] = 24'hc67323;
+        mem[589] = 24'hc5bfd3;
+        mem[590] = 24'hc50d12;
+        mem[591] = 24'hc45ae2;
+        mem[592] = 24'hc3a946;
+        mem[593] = 24'hc2f83f;
+        mem[594] = 24'hc247ce;
+        mem[595] = 24'hc197f5;
+        mem[596] = 24'hc0e8b7;
+        mem[597] = 24'hc03a14;
+        mem[598] = 24'hbf8c0e;
+        mem[599] = 24'hbedea8;
+        mem[600] = 24'hbe31e2;
+        mem[601] = 24'hbd85bf;
+        mem[602] = 24'hbcda3f;
+        mem[603] = 24'hbc2f66;
+        mem[604] = 24'hbb8533;
+        mem[605] = 24'hbadbaa;
+        mem[606] = 24'hba32cb;
+        mem[607] = 24'hb98a98;
+        mem[608] = 24'hb8e314;
+        mem[609] = 24'hb83c3e;
+        mem[610] = 24'hb7961a;
+        mem[611] = 24'hb6f0a9;
+        mem[612] = 24'hb64beb;
+        mem[613] = 24'hb5a7e4;
+        mem[614] = 24'hb50494;
+        mem[615] = 24'hb461fd;
+        mem[616] = 24'hb3c021;
+        mem[617] = 24'hb31f00;
+        mem[618] = 24'hb27e9e;
+        mem[619] = 24'hb1defb;
+        mem[620] = 24'hb14018;
+        mem[621] = 24'hb0a1f8;
+        mem[622] = 24'hb0049b;
+        mem[623] = 24'haf6804;
+        mem[624] = 24'haecc34;
+        mem[625] = 24'hae312c;
+        mem[626] = 24'had96ee;
+        mem[627] = 24'hacfd7c;
+        mem[628] = 24'hac64d6;
+        mem[629] = 24'habccfe;
+        mem[630] = 24'hab35f6;
+        mem[631] = 24'haa9fc0;
+        mem[632] = 24'haa0a5c;
+        mem[633] = 24'ha975cc;
+        mem[634] = 24'ha8e212;
+        mem[635] = 24'ha84f2e;
+        mem[636] = 24'ha7bd23;
+        mem[637] = 24'ha72bf2;
+        mem[638] = 24'ha69b9c;
+        mem[639] = 24'ha60c23;
+        mem[640] = 24'ha57d87;
+        mem[641] = 24'ha4efcb;
+        mem[642] = 24'ha462ef;
+        mem[643] = 24'ha3d6f6;
+        mem[644] = 24'ha34be0;
+        mem[645] = 24'ha2c1af;
+        mem[646] = 24'ha23863;
+        mem[647] = 24'ha1afff;
+        mem[648] = 24'ha12884;
+        mem[649] = 24'ha0a1f3;
+        mem[650] = 24'ha01c4d;
+        mem[651] = 24'h9f9794;
+        mem[652] = 24'h9f13c9;
+        mem[653] = 24'h9e90ec;
+        mem[654] = 24'h9e0f01;
+        mem[655] = 24'h9d8e06;
+        mem[656] = 24'h9d0dff;
+        mem[657] = 24'h9c8eec;
+        mem[658] = 24'h9c10ce;
+        mem[659] = 24'h9b93a7;
+        mem[660] = 24'h9b1778;
+        mem[661] = 24'h9a9c41;
+        mem[662] = 24'h9a2205;
+        mem[663] = 24'h99a8c4;
+        mem[664] = 24'h993080;
+        mem[665] = 24'h98b939;
+        mem[666] = 24'h9842f1;
+        mem[667] = 24'h97cda9;
+        mem[668] = 24'h975962;
+        mem[669] = 24'h96e61e;
+        mem[670] = 24'h9673dc;
+        mem[671] = 24'h9602a0;
+        mem[672] = 24'h959268;
+        mem[673] = 24'h952337;
+        mem[674] = 24'h94b50e;
+        mem[675] = 24'h9447ee;
+        mem[676] = 24'h93dbd7;
+        mem[677] = 24'h9370cc;
+        mem[678] = 24'h9306cc;
+        mem[679] = 24'h929dd9;
+        mem[680] = 24'h9235f4;
+        mem[681] = 24'h91cf1e;
+        mem[682] = 24'h916957;
+        mem[683] = 24'h9104a2;
+        mem[684] = 24'h90a0fe;
+        mem[685] = 24'h903e6d;
+        mem[686] = 24'h8fdcf0;
+        mem[687] = 24'h8f7c88;
+        mem[688] = 24'h8f1d35;
+        mem[689] = 24'h8ebef9;
+        mem[690] = 24'h8e61d4;
+        mem[691] = 24'h8e05c8;
+        mem[692] = 24'h8daad4;
+        mem[693] = 24'h8d50fb;
+        mem[694] = 24'h8cf83d;
+        mem[695] = 24'h8ca09b;
+        mem[696] = 24'h8c4a15;
+        mem[697] = 24'h8bf4ad;
+        mem[698] = 24'h8ba063;
+        mem[699] = 24'h8b4d38;
+        mem[700] = 24'h8afb2e;
+        mem[701] = 24'h8aaa44;
+        mem[702] = 24'h8a5a7b;
+        mem[703] = 24'h8a0bd5;
+        mem[704] = 24'h89be52;
+        mem[705] = 24'h8971f2;
+        mem[706] = 24'h8926b7;
+        mem[707] = 24'h88dca2;
+        mem[708] = 24'h8893b2;
+        mem[709] = 24'h884be9;
+        mem[710] = 24'h880547;
+        mem[711] = 24'h87bfce;
+        mem[712] = 24'h877b7d;
+        mem[713] = 24'h873855;
+        mem[714] = 24'h86f658;
+        mem[715] = 24'h86b585;
+        mem[716] = 24'h8675dd;
+        mem[717] = 24'h863762;
+        mem[718] = 24'h85fa12;
+        mem[719] = 24'h85bdf0;
+        mem[720] = 24'h8582fc;
+        mem[721] = 24'h854935;
+        mem[722] = 24'h85109e;
+        mem[723] = 24'h84d936;
+        mem[724] = 24'h84a2fd;
+        mem[725] = 24'h846df5;
+        mem[726] = 24'h843a1e;
+        mem[727] = 24'h840779;
+        mem[728] = 24'h83d605;
+        mem[729] = 24'h83a5c4;
+        mem[730] = 24'h8376b5;
+        mem[731] = 24'h8348da;
+        mem[732] = 24'h831c32;
+        mem[733] = 24'h82f0bf;
+        mem[734] = 24'h82c680;
+        mem[735] = 24'h829d76;
+        mem[736] = 24'h8275a2;
+        mem[737] = 24'h824f03;
+        mem[738] = 24'h82299a;
+        mem[739] = 24'h820568;
+        mem[740] = 24'h81e26d;
+        mem[741] = 24'h81c0a9;
+        mem[742] = 24'h81a01c;
+        mem[743] = 24'h8180c8;
+        mem[744] = 24'h8162ab;
+        mem[745] = 24'h8145c7;
+        mem[746] = 24'h812a1b;
+        mem[747] = 24'h810fa9;
+        mem[748] = 24'h80f66f;
+        mem[749] = 24'h80de6f;
+        mem[750] = 24'h80c7a9;
+        mem[751] = 24'h80b21d;
+        mem[752] = 24'h809dca;
+        mem[753] = 24'h808ab2;
+        mem[754] = 24'h8078d5;
+        mem[755] = 24'h806832;
+        mem[756] = 24'h8058ca;
+        mem[757] = 24'h804a9d;
+        mem[758] = 24'h803dab;
+        mem[759] = 24'h8031f5;
+        mem[760] = 24'h802779;
+        mem[761] = 24'h801e3a;
+        mem[762] = 24'h801635;
+        mem[763] = 24'h800f6d;
+        mem[764] = 24'h8009df;
+        mem[765] = 24'h80058e;
+        mem[766] = 24'h800279;
+        mem[767] = 24'h80009f;
+        mem[768] = 24'h800001;
+        mem[769] = 24'h80009f;
+        mem[770] = 24'h800279;
+        mem[771] = 24'h80058e;
+        mem[772] = 24'h8009df;
+        mem[773] = 24'h800f6d;
+        mem[774] = 24'h801635;
+        mem[775] = 24'h801e3a;
+        mem[776] = 24'h802779;
+        mem[777] = 24'h8031f5;
+        mem[778] = 24'h803dab;
+        mem[779] = 24'h804a9d;
+        mem[780] = 24'h8058ca;
+        mem[781] = 24'h806832;
+        mem[782] = 24'h8078d5;
+        mem[783] = 24'h808ab2;
+        mem[784] = 24'h809dca;
+        mem[785] = 24'h80b21d;
+        mem[786] = 24'h80c7a9;
+        mem[787] = 24'h80de6f;
+        mem[788] = 24'h80f66f;
+        mem[789] = 24'h810fa9;
+        mem[790] = 24'h812a1b;
+        mem[791] = 24'h8145c7;
+        mem[792] = 24'h8162ab;
+        mem[793] = 24'h8180c8;
+        mem[794] = 24'h81a01c;
+        mem[795] = 24'h81c0a9;
+        mem[796] = 24'h81e26d;
+        mem[797] = 24'h820568;
+        mem[798] = 24'h82299a;
+        mem[799] = 24'h824f03;
+        mem[800] = 24'h8275a2;
+        mem[801] = 24'h829d76;
+        mem[802] = 24'h82c680;
+        mem[803] = 24'h82f0bf;
+        mem[804] = 24'h831c32;
+        mem[805] = 24'h8348da;
+        mem[806] = 24'h8376b5;
+        mem[807] = 24'h83a5c4;
+        mem[808] = 24'h83d605;
+        mem[809] = 24'h840779;
+        mem[810] = 24'h843a1e;
+        mem[811] = 24'h846df5;
+        mem[812] = 24'h84a2fd;
+        mem[813] = 24'h84d936;
+        mem[814] = 24'h85109e;
+        mem[815] = 24'h854935;
+        mem[816] = 24'h8582fc;
+        mem[817] = 24'h85bdf0;
+        mem[818] = 24'h85fa12;
+        mem[819] = 24'h863762;
+        mem[820] = 24'h8675dd;
+        mem[821] = 24'h86b585;
+        mem[822] = 24'h86f658;
+        mem[823] = 24'h873855;
+        mem[824] = 24'h877b7d;
+        mem[825] = 24'h87bfce;
+        mem[826] = 24'h880547;
+        mem[827] = 24'h884be9;
+        mem[828] = 24'h8893b2;
+        mem[829] = 24'h88dca2;
+        mem[830] = 24'h8926b7;
+        mem[831] = 24'h8971f2;
+        mem[832] = 24'h89be52;
+        mem[833] = 24'h8a0bd5;
+        mem[834] = 24'h8a5a7b;
+        mem[835] = 24'h8aaa44;
+        mem[836] = 24'h8afb2e;
+        mem[837] = 24'h8b4d38;
+        mem[838] = 24'h8ba063;
+        mem[839] = 24'h8bf4ad;
+        mem[840] = 24'h8c4a15;
+        mem[841] = 24'h8ca09b;
+        mem[842] = 24'h8cf83d;
+        mem[843] = 24'h8d50fb;
+        mem[844] = 24'h8daad4;
+        mem[845] = 24'h8e05c8;
+        mem[846] = 24'h8e61d4;
+        mem[847] = 24'h8ebef9;
+        mem[848] = 24'h8f1d35;
+        mem[849] = 24'h8f7c88;
+        mem[850] = 24'h8fdcf0;
+        mem[851] = 24'h903e6d;
+        mem[852] = 24'h90a0fe;
+        mem[853] = 24'h9104a2;
+        mem[854] = 24'h916957;
+        mem[855] = 24'h91cf1e;
+        mem[856] = 24'h9235f4;
+        mem[857] = 24'h929dd9;
+        mem[858] = 24'h9306cc;
+        mem[859] = 24'h9370cc;
+        mem[860] = 24'h93dbd7;
+        mem[861] = 24'h9447ee;
+        mem[862] = 24'h94b50e;
+        mem[863] = 24'h952337;
+        mem[864] = 24'h959268;
+        mem[865] = 24'h9602a0;
+        mem[866] = 24'h9673dc;
+        mem[867] = 24'h96e61e;
+        mem[868] = 24'h975962;
+        mem[869] = 24'h97cda9;
+        mem[870] = 24'h9842f1;
+        mem[871] = 24'h98b939;
+        mem[872] = 24'h993080;
+        mem[873] = 24'h99a8c4;
+        mem[874] = 24'h9a2205;
+        mem[875] = 24'h9a9c41;
+        mem[876] = 24'h9b1778;
+        mem[877] = 24'h9b93a7;
+        mem[878] = 24'h9c10ce;
+        mem[879] = 24'h9c8eec;
+        mem[880] = 24'h9d0dff;
+        mem[881] = 24'h9d8e06;
+        mem[882] = 24'h9e0f01;
+        mem[883] = 24'h9e90ec;
+        mem[884] = 24'h9f13c9;
+        mem[885] = 24'h9f9794;
+        mem[886] = 24'ha01c4d;
+        mem[887] = 24'ha0a1f3;
+        mem[888] = 24'ha12884;
+        mem[889] = 24'ha1afff;
+        mem[890] = 24'ha23863;
+        mem[891] = 24'ha2c1af;
+        mem[892] = 24'ha34be0;
+        mem[893] = 24'ha3d6f6;
+        mem[894] = 24'ha462ef;
+        mem[895] = 24'ha4efcb;
+        mem[896] = 24'ha57d87;
+        mem[897] = 24'ha60c23;
+        mem[898] = 24'ha69b9c;
+        mem[899] = 24'ha72bf2;
+        mem[900] = 24'ha7bd23;
+        mem[901] = 24'ha84f2e;
+        mem[902] = 24'ha8e212;
+        mem[903] = 24'ha975cc;
+        mem[904] = 24'haa0a5c;
+        mem[905] = 24'haa9fc0;
+        mem[906] = 24'hab35f6;
+        mem[907] = 24'habccfe;
+        mem[908] = 24'hac64d6;
+        mem[909] = 24'hacfd7c;
+        mem[910] = 24'had96ee;
+        mem[911] = 24'hae312c;
+        mem[912] = 24'haecc34;
+        mem[913] = 24'haf6804;
+        mem[914] = 24'hb0049b;
+        mem[915] = 24'hb0a1f8;
+        mem[916] = 24'hb14018;
+        mem[917] = 24'hb1defb;
+        mem[918] = 24'hb27e9e;
+        mem[919] = 24'hb31f00;
+        mem[920] = 24'hb3c021;
+        mem[921] = 24'hb461fd;
+        mem[922] = 24'hb50494;
+        mem[923] = 24'hb5a7e4;
+        mem[924] = 24'hb64beb;
+        mem[925] = 24'hb6f0a9;
+        mem[926] = 24'hb7961a;
+        mem[927] = 24'hb83c3e;
+        mem[928] = 24'hb8e314;
+        mem[929] = 24'hb98a98;
+        mem[930] = 24'hba32cb;
+        mem[931] = 24'hbadbaa;
+        mem[932] = 24'hbb8533;
+        mem[933] = 24'hbc2f66;
+        mem[934] = 24'hbcda3f;
+        mem[935] = 24'hbd85bf;
+        mem[936] = 24'hbe31e2;
+        mem[937] = 24'hbedea8;
+        mem[938] = 24'hbf8c0e;
+        mem[939] = 24'hc03a14;
+        mem[940] = 24'hc0e8b7;
+        mem[941] = 24'hc197f5;
+        mem[942] = 24'hc247ce;
+        mem[943] = 24'hc2f83f;
+        mem[944] = 24'hc3a946;
+        mem[945] = 24'hc45ae2;
+        mem[946] = 24'hc50d12;
+        mem[947] = 24'hc5bfd3;
+        mem[948] = 24'hc67323;
+        mem[949] = 24'hc72702;
+        mem[950] = 24'hc7db6d;
+        mem[951] = 24'hc89062;
+        mem[952] = 24'hc945e0;
+        mem[953] = 24'hc9fbe6;
+        mem[954] = 24'hcab270;
+        mem[955] = 24'hcb697e;
+        mem[956] = 24'hcc210e;
+        mem[957] = 24'hccd91e;
+        mem[958] = 24'hcd91ac;
+        mem[959] = 24'hce4ab6;
+        mem[960] = 24'hcf043b;
+        mem[961] = 24'hcfbe39;
+        mem[962] = 24'hd078ae;
+        mem[963] = 24'hd13398;
+        mem[964] = 24'hd1eef6;
+        mem[965] = 24'hd2aac5;
+        mem[966] = 24'hd36705;
+        mem[967] = 24'hd423b2;
+        mem[968] = 24'hd4e0cb;
+        mem[969] = 24'hd59e4f;
+        mem[970] = 24'hd65c3c;
+        mem[971] = 24'hd71a8f;
+        mem[972] = 24'hd7d947;
+        mem[973] = 24'hd89862;
+        mem[974] = 24'hd957df;
+        mem[975] = 24'hda17bb;
+        mem[976] = 24'hdad7f4;
+        mem[977] = 24'hdb9889;
+        mem[978] = 24'hdc5978;
+        mem[979] = 24'hdd1abf;
+        mem[980] = 24'hdddc5b;
+        mem[981] = 24'hde9e4d;
+        mem[982] = 24'hdf6090;
+        mem[983] = 24'he02324;
+        mem[984] = 24'he0e607;
+        mem[985] = 24'he1a936;
+        mem[986] = 24'he26cb0;
+        mem[987] = 24'he33074;
+        mem[988] = 24'he3f47e;
+        mem[989] = 24'he4b8cd;
+        mem[990] = 24'he57d60;
+        mem[991] = 24'he64234;
+        mem[992] = 24'he70748;
+        mem[993] = 24'he7cc99;
+        mem[994] = 24'he89226;
+        mem[995] = 24'he957ed;
+        mem[996] = 24'hea1dec;
+        mem[997] = 24'heae421;
+        mem[998] = 24'hebaa89;
+        mem[999] = 24'hec7124;
+        mem[1000] = 24'hed37f0;
+        mem[1001] = 24'hedfee9;
+        mem[1002] = 24'heec60f;
+        mem[1003] = 24'hef8d60;
+        mem[1004] = 24'hf054d9;
+        mem[1005] = 24'hf11c79;
+        mem[1006] = 24'hf1e43d;
+        mem[1007] = 24'hf2ac25;
+        mem[1008] = 24'hf3742d;
+        mem[1009] = 24'hf43c54;
+        mem[1010] = 24'hf50498;
+        mem[1011] = 24'hf5ccf7;
+        mem[1012] = 24'hf69570;
+        mem[1013] = 24'hf75dff;
+        mem[1014] = 24'hf826a4;
+        mem[1015] = 24'hf8ef5d;
+        mem[1016] = 24'hf9b827;
+        mem[1017] = 24'hfa8100;
+        mem[1018] = 24'hfb49e7;
+        mem[1019] = 24'hfc12d9;
+        mem[1020] = 24'hfcdbd5;
+        mem[1021] = 24'hfda4d9;
+        mem[1022] = 24'hfe6de3;
+        mem[1023] = 24'hff36f0;
+    end
+    
+    always @(posedge clock) begin
+        word <= mem[address[9:0]];
+        in_range <= {1'b0, address} < 17'd1024;
+    end
+    
+    always @(*) data = in_range ? word : 24'd0;
+endmodule // encspeed_ecc$gatherer$rom_s$rom
+
+
+module encspeed_ecc$gatherer$sc(d,q,clock);
+    
+    // Module arguments
+    input wire  [71:0] d;
+    output reg  [71:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 72'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$sc
+
+
+module encspeed_ecc$gatherer$ss(d,q,clock);
+    
+    // Module arguments
+    input wire  [71:0] d;
+    output reg  [71:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 72'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$ss
+
+
+module encspeed_ecc$gatherer$st(d,q,clock);
+    
+    // Module arguments
+    input wire  [71:0] d;
+    output reg  [71:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 72'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$st
+
+
+module encspeed_ecc$gatherer$state(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$state
+
+
+module encspeed_ecc$gatherer$t_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$t_reg
+
+
+module encspeed_ecc$gatherer$tmax(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$tmax
+
+
+module encspeed_ecc$gatherer$tmin(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$gatherer$tmin
+
+
+module encspeed_ecc$line_tap(clock,reset,position,forward,shift,counts_per_rev,line,line_position,period);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [31:0] position;
+    input wire  forward;
+    input wire  [1:0] shift;
+    input wire  [31:0] counts_per_rev;
+    output reg  line;
+    output reg  [15:0] line_position;
+    output reg  [31:0] period;
+    
+    // Constant declarations
+    localparam  zero_c = 32'h0;
+    localparam  zero32 = 32'h0;
+    localparam  one32 = 32'h1;
+    localparam  one_c = 32'h1;
+    
+    // Stub signals
+    reg  [31:0] last_position$d;
+    wire  [31:0] last_position$q;
+    reg  last_position$clock;
+    reg  [31:0] since$d;
+    wire  [31:0] since$q;
+    reg  since$clock;
+    
+    // Local signals
+    reg  first_step;
+    reg  is_line;
+    reg  [31:0] after;
+    
+    // Sub module instances
+    encspeed_ecc$line_tap$last_position last_position(
+        .d(last_position$d),
+        .q(last_position$q),
+        .clock(last_position$clock)
+    );
+    encspeed_ecc$line_tap$since since(
+        .d(since$d),
+        .q(since$q),
+        .clock(since$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        last_position$clock = clock;
+        since$clock = clock;
+        last_position$d = last_position$q;
+        since$d = since$q;
+        first_step = 1'b1;
+        line_position = position[(32'h0)+:(16)];
+        if (shift[32'h0] & ~shift[32'h1]) begin
+            first_step = ~position[32'h0];
+            line_position = position[(32'h1)+:(16)];
+        end
+        if (shift[32'h1]) begin
+            first_step = ~position[32'h0] & ~position[32'h1];
+            line_position = position[(32'h2)+:(16)];
+        end
+        after = last_position$q + one_c;
+        is_line = ((position == after) | ((position == zero_c) & (after == counts_per_rev))) & forward & first_step;
+        line = is_line;
+        period = since$q;
+        last_position$d = position;
+        if (&since$q) begin
+            since$d = since$q;
+        end
+        else begin
+            since$d = since$q + one32;
+        end
+        if (is_line) begin
+            since$d = one32;
+        end
+        if (reset) begin
+            last_position$d = zero_c;
+            since$d = zero32;
+        end
+    end
+    
+endmodule // encspeed_ecc$line_tap
+
+
+module encspeed_ecc$line_tap$last_position(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$line_tap$last_position
+
+
+module encspeed_ecc$line_tap$since(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$line_tap$since
 
 
 module encspeed_ecc$mode_reg(d,q,clock);

@@ -181,9 +181,11 @@ enum Cmd {
     ///
     /// A rigid disc whose centre is --delta-r-mm off the shaft, read at a constant speed,
     /// x1, cfg_z_mode = 1 (the position counts from line 0), the coefficients of that disc on
-    /// ecc_c/ecc_d. Prints the 1/rev amplitude, peak to peak and worst error against its
-    /// budget; writes the figure (speeds in r/min over the shaft angle) to --svg and the M/T
-    /// samples to --csv. See docs/eccentricity-hardware.md.
+    /// ecc_c/ecc_d (with --identify: those of the e and θ0 that the Verilog's own
+    /// identification gathered in a first run). Prints the identification (armed at the
+    /// first index) and its error, the 1/rev amplitude, peak to peak and worst error against
+    /// its budget; writes the figure (speeds in r/min over the shaft angle) to --svg and the
+    /// M/T samples to --csv. See docs/eccentricity-hardware.md.
     EccRipple {
         #[command(flatten)]
         spec: SpecArgs,
@@ -208,6 +210,10 @@ enum Cmd {
         /// Write every sample (series, angle_rad, error_ppm) here.
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// Identify e and θ0 on the Verilog first (2.1 revolutions) and load the corrector
+        /// with them, instead of the disc's own.
+        #[arg(long)]
+        identify: bool,
     },
 }
 
@@ -587,6 +593,7 @@ fn main() -> ExitCode {
             theta0_deg,
             svg,
             csv,
+            identify,
         } => spec.run(|p| {
             if !(rpm > 0.0 && rpm.is_finite() && revs >= 1.0 && revs.is_finite()) {
                 return Err((2, "ecc-ripple: --rpm must be > 0 and --revs >= 1".into()));
@@ -599,8 +606,9 @@ fn main() -> ExitCode {
                 revs,
                 e: delta_r_mm / radius_mm,
                 theta0: theta0_deg.to_radians(),
+                loaded: None,
             };
-            ecc_ripple(p, setup, &svg, csv.as_deref())
+            ecc_ripple(p, setup, identify, &svg, csv.as_deref())
         }),
     };
     match result {
@@ -646,32 +654,51 @@ fn generate(p: &Params, out: &Path) -> Outcome {
     Ok(())
 }
 
-/// The ripple of `setup` on the emitted `encspeed_ecc.v` for `p`, in Verilator.
+/// The ripple of `setup` on the emitted `encspeed_ecc.v` for `p`, in Verilator; with
+/// `identify`, the corrector loaded with the Verilog's identification.
 fn ecc_ripple(
     p: &Params,
-    setup: tb::ecc_ripple::RippleSetup,
+    mut setup: tb::ecc_ripple::RippleSetup,
+    identify: bool,
     svg: &Path,
     csv: Option<&Path>,
 ) -> Outcome {
-    use tb::ecc_ripple::{draw_svg, run_verilog, Ripple};
+    use tb::ecc_ripple::{draw_svg, identify_on_verilog, run_verilog, Identification, Ripple};
     let verilog = hdl::emit_ecc(p).map_err(|e| (2, e))?;
     let sim =
         tb::ecc_verilator::EccVerilated::build(&verilog, p.speed_bits()).map_err(|e| (1, e))?;
-    let (strobes, stim) = run_verilog(&sim, p, &setup).map_err(|e| (1, e))?;
-    let ripple = Ripple::new(p, setup, &strobes, stim.aligned_after);
+    if identify {
+        let id = identify_on_verilog(&sim, p, &setup).map_err(|e| (1, e))?;
+        println!("{}", id.summary());
+        setup.loaded = Some((id.identified.e, id.identified.theta0));
+    }
+    let (log, stim) = run_verilog(&sim, p, &setup).map_err(|e| (1, e))?;
+    let ripple = Ripple::new(p, setup, &log.strobes, stim.aligned_after);
     if ripple.mt_before.is_empty() || ripple.n3_before.is_empty() {
         return Err((
             1,
             "ecc-ripple: no estimates after the index (too slow for dt?)".into(),
         ));
     }
+    let (le, lth) = setup.loaded.unwrap_or((setup.e, setup.theta0));
     println!(
-        "encspeed_ecc.v in Verilator, e = {:.6}, theta0 = {:.2} deg, {} cycles\n{}",
+        "encspeed_ecc.v in Verilator, e = {:.6}, theta0 = {:.2} deg, corrector loaded with \
+         e = {le:.8}, theta0 = {:.5} deg ({}), {} cycles",
         setup.e,
         setup.theta0.to_degrees(),
+        lth.to_degrees(),
+        if setup.loaded.is_some() {
+            "identified"
+        } else {
+            "the disc's own"
+        },
         stim.cycles,
-        ripple.summary()
     );
+    match Identification::of(p, &setup, &log) {
+        Some(id) => println!("{}", id.summary()),
+        None => println!("no identification in this run (under 2.1 revolutions)"),
+    }
+    println!("{}", ripple.summary());
     let title = format!(
         "encspeed_ecc.v in Verilator: {} r/min, e = {:.5}, θ0 = {:.0}°, K = {}, dt = {} ms, x1",
         setup.rpm,

@@ -64,9 +64,11 @@ fn generate_for_lines_not_a_multiple_of_4_writes_the_core_and_says_why_not_the_e
     );
 }
 
-/// Five revolutions at 6000 r/min (10 M/T windows each) on encspeed_ecc.v in Verilator: before
-/// correction the once-per-revolution ripple is the eccentricity e = 0.35/30 = 11 667 ppm
-/// (by hand), after it below 10 ppm; bad arguments exit 2.
+/// Five revolutions at 6000 r/min (10 M/T windows each) on encspeed_ecc.v in Verilator,
+/// with the corrector loaded from the Verilog's own identification (--identify): it
+/// finds e = 0.35/30 (by hand) within 1 % and θ0 = 50° within 1°; before correction the
+/// once-per-revolution ripple is the eccentricity e = 11 667 ppm, after it below 10 ppm;
+/// bad arguments exit 2.
 #[test]
 fn ecc_ripple_prints_the_ripple_and_writes_the_figure() {
     let out = scratch("ecc-ripple");
@@ -82,14 +84,26 @@ fn ecc_ripple_prints_the_ripple_and_writes_the_figure() {
         svg.to_str().unwrap(),
         "--csv",
         csv.to_str().unwrap(),
+        "--identify",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
-    let line = text.lines().find(|l| l.starts_with("M/T:")).expect(&text);
-    let number_after = |key: &str| -> f64 {
+    let number_in = |line: &str, key: &str| -> f64 {
         let rest = &line[line.find(key).expect(line) + key.len()..];
         rest.split_whitespace().next().unwrap().parse().unwrap()
     };
+    let id = text
+        .lines()
+        .find(|l| l.starts_with("identified on the Verilog"))
+        .expect(&text);
+    assert!(
+        (number_in(id, "e = ") / (0.35 / 30.0) - 1.0).abs() < 0.01,
+        "{id}"
+    );
+    assert!((number_in(id, "theta0 = ") - 50.0).abs() < 1.0, "{id}");
+    assert!(text.contains("corrector loaded with"), "{text}");
+    let line = text.lines().find(|l| l.starts_with("M/T:")).expect(&text);
+    let number_after = |key: &str| number_in(line, key);
     let before = number_after("1/rev ");
     let after = number_after("-> ");
     assert!((before / 11_667.0 - 1.0).abs() < 0.03, "{line}");

@@ -8,9 +8,21 @@
 //! `baseline_strobe`. A window closing while the corrector is busy replaces a pending one
 //! (the latest wins): with dt at least the latency, every window is corrected.
 //! `reset` and a change of `cfg_mode` reset the corrector as they reset the core.
+//!
+//! **Identification.** A [`LineTap`] takes the line edges (forward, one per line) from the
+//! core's `position` and `direction`, with their line numbers and periods, and feeds an
+//! [`IdentGatherer`] (K = lines, A = [`LINE_BITS`], T = [`PERIOD_BITS`], W = 72) whose
+//! `index` is the core's `index`: a pulse on `ident_arm` gathers the next revolution (index
+//! to index) and raises `ident.done` ([`crate::ident_gatherer`] gives the timing). Arm
+//! once an index has aligned the position (the contract of [`crate::line_tap`]);
+//! [`crate::ident_gatherer::identify_from_sums`] turns the sums into e and θ0 in the frame
+//! of the core's position, the frame of `ecc_c`/`ecc_d`. `reset` and a change of
+//! `cfg_mode` reset both.
 
 use crate::baseline_speeds::BaselineFormat;
 use crate::core::{mode_shift, CoreInputs, CoreModel, CoreOutputs};
+use crate::ident_gatherer::{sum_bits, GatherInputs, GatherOutputs, IdentGatherer};
+use crate::line_tap::{LineTap, LINE_BITS, PERIOD_BITS};
 use crate::mt_corrector::{MtCorrectorModel, MtJob};
 use crate::n3_corrector::{N3CorrectorModel, N3Job};
 use crate::params::{Params, SPEED_FRAC_BITS};
@@ -26,6 +38,14 @@ pub const TABLE_ADDRESS_BITS: u32 = 16;
 
 /// Width of the sine table's entries.
 pub const TABLE_DATA_BITS: u32 = 24;
+
+/// Edges from the one that raises the core's closing `index` to the one that raises
+/// `ident.done`: the gatherer samples `index` at the next edge and registers `done` at the
+/// one after ([`crate::ident_gatherer`]).
+pub const IDENT_DONE_AFTER_INDEX: u64 = 2;
+
+/// Width of the identification sums: `sum_bits(LINE_BITS, PERIOD_BITS)` = 72.
+pub const IDENT_SUM_BITS: u32 = sum_bits(LINE_BITS, PERIOD_BITS);
 
 /// Why `p` cannot have the eccentricity corrector (the sine table needs a multiple of 4
 /// lines, 4 ≤ K ≤ 2^16), or Ok.
@@ -43,6 +63,8 @@ pub struct EccTopInputs {
     pub ecc_c: i64,
     /// d = E·sin θ0, Q15.16 lines.
     pub ecc_d: i64,
+    /// Gather the next revolution for the identification (a one-cycle pulse).
+    pub ident_arm: bool,
 }
 
 /// Outputs of `encspeed_ecc` after a rising edge.
@@ -58,6 +80,8 @@ pub struct EccTopOutputs {
     pub speed_n3c: i64,
     /// One cycle: `speed_n3c` was just written.
     pub n3c_strobe: bool,
+    /// The identification gatherer's results (`ident_*` ports).
+    pub ident: GatherOutputs,
 }
 
 /// Cycle model of `encspeed_ecc`.
@@ -66,6 +90,9 @@ pub struct EccTopModel {
     core: CoreModel,
     mtc: MtCorrectorModel,
     n3c: N3CorrectorModel,
+    line_tap: LineTap,
+    gatherer: IdentGatherer,
+    counts_per_rev: [u64; 3],
     mode_reg: u8,
 }
 
@@ -80,6 +107,9 @@ impl EccTopModel {
             core: CoreModel::new(p),
             mtc: MtCorrectorModel::new(p.lines(), table_bits(), format),
             n3c: N3CorrectorModel::new(p.lines(), table_bits(), p.counter_bits(), p.speed_bits()),
+            line_tap: LineTap::new(),
+            gatherer: IdentGatherer::new(p.lines(), LINE_BITS, PERIOD_BITS),
+            counts_per_rev: [0, 1, 2].map(|s| p.counts_per_rev(s)),
             mode_reg: 0,
         }
     }
@@ -111,6 +141,26 @@ impl EccTopModel {
         });
         let mtc = self.mtc.step(rst, job);
         let n3c = self.n3c.step(rst, n3_job);
+        let shift = mode_shift(c.cfg_mode);
+        let counts_per_rev = self.counts_per_rev[shift as usize];
+        let tap = self
+            .line_tap
+            .outputs(before.position, before.direction, shift, counts_per_rev);
+        let ident = self.gatherer.step(GatherInputs {
+            reset: rst,
+            arm: inp.ident_arm,
+            index: before.index,
+            line: tap.line,
+            position: tap.line_position,
+            period: tap.period,
+        });
+        self.line_tap.step(
+            rst,
+            before.position,
+            before.direction,
+            shift,
+            counts_per_rev,
+        );
         let core = self.core.step(inp.core);
         EccTopOutputs {
             core,
@@ -118,6 +168,7 @@ impl EccTopModel {
             mtc_strobe: mtc.valid,
             speed_n3c: n3c.n3c,
             n3c_strobe: n3c.valid,
+            ident,
         }
     }
 }
@@ -146,4 +197,57 @@ pub fn disc_inputs(
         i.core.enc_z = levels.z;
         i
     })
+}
+
+/// [`EccTopModel`] that raises `ident_arm` for one cycle `delay` cycles after its first
+/// `index` (the contract of [`crate::line_tap`]: the position is aligned from then on), as
+/// the Verilator harness's event mode does.
+#[derive(Clone, Debug)]
+pub struct ArmedModel {
+    model: EccTopModel,
+    delay: u64,
+    arm_at: Option<u64>,
+    cycle: u64,
+}
+
+impl ArmedModel {
+    /// The model of `p` after reset, arming `delay` cycles after the first index.
+    pub fn new(p: &Params, delay: u64) -> Self {
+        Self {
+            model: EccTopModel::new(p),
+            delay,
+            arm_at: None,
+            cycle: 0,
+        }
+    }
+
+    /// One edge with `inp` (its `ident_arm` replaced); the inputs as applied and the
+    /// outputs.
+    pub fn step(&mut self, mut inp: EccTopInputs) -> (EccTopInputs, EccTopOutputs) {
+        inp.ident_arm = self.arm_at == Some(self.cycle);
+        let o = self.model.step(inp);
+        if o.core.index && self.arm_at.is_none() {
+            self.arm_at = Some(self.cycle + 1 + self.delay);
+        }
+        self.cycle += 1;
+        (inp, o)
+    }
+
+    /// The cycle the arm is (or was) raised in, once an index has come.
+    pub fn arm_at(&self) -> Option<u64> {
+        self.arm_at
+    }
+}
+
+/// Why the results `g` are not those of one revolution of `lines` lines lasting
+/// `rev_cycles` cycles at constant speed (done, no overflow, K lines, Σ T within one cycle
+/// of the revolution: the two line-0 edges are each sampled within a cycle), or Ok.
+pub fn check_revolution(g: &GatherOutputs, lines: u32, rev_cycles: f64) -> Result<(), String> {
+    if !g.done || g.overflow || g.count != u64::from(lines) {
+        return Err(format!("not one revolution of {lines} lines: {g:?}"));
+    }
+    if (g.sum_t as f64 - rev_cycles).abs() > 1.0 {
+        return Err(format!("sum_t {} for {rev_cycles} cycles", g.sum_t));
+    }
+    Ok(())
 }

@@ -59,7 +59,7 @@ pub const S_BITS: u32 = 24;
 pub const COUNT_BITS: u32 = 17;
 
 /// Accumulator width W = A + T + 24 (module docs).
-pub fn sum_bits(addr_bits: u32, period_bits: u32) -> u32 {
+pub const fn sum_bits(addr_bits: u32, period_bits: u32) -> u32 {
     addr_bits + period_bits + S_BITS
 }
 
@@ -268,4 +268,24 @@ pub fn identify_from_sums(
         e,
         theta0: beta.atan2(-alpha).rem_euclid(TAU),
     }
+}
+
+/// Bound on the error of e (absolute) and θ0 (radians) that [`identify_from_sums`] gives
+/// from a revolution of `sum_t` clock cycles gathered on a disc of eccentricity `e`,
+/// worked by hand:
+/// - each line edge is sampled with an error q_i ∈ [0, 1) cycle, so a period is off by
+///   q_i − q_(i−1); summed by parts against a table w (sin or cos), Σ (q_i − q_(i−1))·w_i
+///   = Σ q_i·(w_i − w_(i+1)) + the two end terms, at most the total variation of a sine
+///   over a revolution (4) plus 1: 5 cycles in each of C and S;
+/// - α, β = 2C/(ΣT·sinc(π/K)), 2S/(…): each within 10/ΣT (sinc > 0.99 for K ≥ 8), a1
+///   within √2·10/ΣT;
+/// - the 24-bit table's rounding, ½ LSB of Q = 2^23 − 1 per entry: α, β within 1/Q,
+///   a1 within √2/Q;
+/// - the harmonic fit's own error on exact periods (docs/eccentricity.md): 2e-6·e and
+///   4e-5° (7e-7 rad).
+///
+/// θ0's error is a1's divided by e.
+pub fn error_budget(sum_t: f64, e: f64) -> (f64, f64) {
+    let a1 = std::f64::consts::SQRT_2 * (10.0 / sum_t + 1.0 / f64::from((1u32 << 23) - 1));
+    (a1 + 2e-6 * e, a1 / e + 7e-7)
 }

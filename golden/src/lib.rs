@@ -27,6 +27,7 @@ pub mod frontend;
 pub mod ideal;
 pub mod ident_gatherer;
 pub mod latest_request;
+pub mod line_tap;
 pub mod mt;
 pub mod mt_corrector;
 pub mod mt_counter;

@@ -79,8 +79,8 @@ pub fn core_ports(p: &Params) -> Vec<Port> {
     ]
 }
 
-/// Every port of `encspeed_ecc` for `p`: those of `encspeed_core`, then the coefficients
-/// and the corrected speeds (`crate::ecc_top`).
+/// Every port of `encspeed_ecc` for `p`: those of `encspeed_core`, then the coefficients,
+/// the corrected speeds and the identification (`crate::ecc_top`).
 pub fn ecc_ports(p: &Params) -> Vec<Port> {
     let s = p.speed_bits();
     let mut v = core_ports(p);
@@ -97,6 +97,17 @@ pub fn ecc_ports(p: &Params) -> Vec<Port> {
         port("mtc_strobe", "output", 1, "one cycle: speed_mtc has just been written"),
         port("speed_n3c", "output", s, "Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3"),
         port("n3c_strobe", "output", 1, "one cycle: speed_n3c has just been written"),
+        port("ident_arm", "input", 1, "one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification; raise it once an index has aligned the position (cfg_z_mode = 1 or 3); clears ident_done"),
+        port("ident_done", "output", 1, "the ident_* results are complete (registered the edge after the closing index); sticky until ident_arm"),
+        port("ident_overflow", "output", 1, "more than 2^16 lines between the index pulses (contract broken, extra lines dropped)"),
+        port("ident_count", "output", 17, "forward lines gathered N (lines per revolution for a clean revolution)"),
+        port("ident_t_min", "output", 32, "shortest line period, clock cycles (Zhao's T_min)"),
+        port("ident_p_min", "output", 16, "line number of the edge that closed it (first on ties)"),
+        port("ident_t_max", "output", 32, "longest line period, clock cycles (Zhao's T_max)"),
+        port("ident_p_max", "output", 16, "line number of the edge that closed it (first on ties)"),
+        port("ident_sum_t", "output", 72, "sum of the line periods T, clock cycles (the revolution's length)"),
+        port("ident_sum_sin", "output", 72, "sum of T * round(Q sin(2 pi p / lines)), two's complement, Q = 2^23 - 1, p the line number of the edge closing T"),
+        port("ident_sum_cos", "output", 72, "sum of T * round(Q cos(2 pi p / lines)), two's complement; e and theta0 from the three sums: golden::ident_gatherer::identify_from_sums (docs/eccentricity-hardware.md)"),
     ]);
     v
 }

@@ -1,13 +1,16 @@
 //! `encspeed_ecc`'s bit-true model on the rigid eccentric disc: the corrected M/T speed of
 //! every window against the plant's constant shaft speed (the position aligned to the disc's
-//! lines by the index, `cfg_z_mode` = 1). The Verilog's figures: tb/tests/ecc_top.rs.
+//! lines by the index, `cfg_z_mode` = 1), and the identification gathered by the same top
+//! (armed at the first index, which aligns the position) against the disc's e and θ0 within the budget of
+//! `golden::ident_gatherer::error_budget`. The Verilog's figures: tb/tests/ecc_top.rs.
 
 use golden::bittrue::CoreInputs;
 use golden::ecc_delta::coefficients;
-use golden::ecc_top::{EccTopInputs, EccTopModel};
+use golden::ecc_top::{check_revolution, ArmedModel, EccTopInputs, IDENT_DONE_AFTER_INDEX};
 use golden::eccentric::correct::once_per_rev;
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
+use golden::ident_gatherer::{error_budget, identify_from_sums, GatherOutputs};
 use golden::params::{Params, Spec};
 use golden::plant::{ClockSampler, Profile};
 use std::f64::consts::TAU;
@@ -34,21 +37,23 @@ fn corrected_mt_on_the_rigid_disc() {
     let (c, d) = coefficients(K, e, theta0);
     for rpm in [6000.0, 600.0] {
         let rps: f64 = rpm / 60.0;
-        let revs = 2.2;
+        let revs = 3.3;
         let profile = Profile::constant(rps, revs / rps).unwrap();
         let disc =
             EccentricDisc::new(K, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
         let edges = disc.edges(&profile);
         let n = (profile.duration() * CLOCK) as u64;
         let sampler = ClockSampler::new(disc.initial_levels(&profile), &edges, CLOCK, n).unwrap();
-        let mut top = EccTopModel::new(&p);
+        let mut top = ArmedModel::new(&p, 0);
         let r = rps * f64::from(K) * DT as f64 / CLOCK;
         let (mut before, mut after) = (vec![], vec![]);
         let (mut n3_before, mut n3_after) = (vec![], vec![]);
         let t0 = std::time::Instant::now();
         let mut aligned = false;
+        let mut ident = GatherOutputs::default();
+        let (mut last_index, mut done_at) = (0, None);
         for (k, s) in sampler.enumerate() {
-            let o = top.step(EccTopInputs {
+            let (_, o) = top.step(EccTopInputs {
                 core: CoreInputs {
                     reset: k < 3,
                     enc_a: s.a,
@@ -59,7 +64,15 @@ fn corrected_mt_on_the_rigid_disc() {
                 },
                 ecc_c: c,
                 ecc_d: d,
+                ident_arm: false,
             });
+            if o.ident.done && !ident.done {
+                done_at = Some(k as u64 - last_index);
+            }
+            if o.core.index {
+                last_index = k as u64;
+            }
+            ident = o.ident;
             let t = k as f64 / CLOCK;
             aligned |= o.core.index;
             if !aligned {
@@ -114,5 +127,29 @@ fn corrected_mt_on_the_rigid_disc() {
             once_per_rev(&b) * 1e6,
             once_per_rev(&a) * 1e6
         );
+        // The identification of the first whole revolution: K lines, Σ T the revolution's
+        // length (±1 cycle of sampling), e and θ0 within the budget.
+        assert_eq!(
+            check_revolution(&ident, K, CLOCK / rps),
+            Ok(()),
+            "{rpm} rpm"
+        );
+        // The documented latency from the closing index (docs/ports.md).
+        assert_eq!(done_at, Some(IDENT_DONE_AFTER_INDEX));
+        let got = identify_from_sums(K, ident.sum_t, ident.sum_sin, ident.sum_cos, Model::Rigid);
+        let (de, dth) = error_budget(ident.sum_t as f64, e);
+        let err_th =
+            (got.theta0 - theta0 + std::f64::consts::PI).rem_euclid(TAU) - std::f64::consts::PI;
+        println!(
+            "{rpm} rpm identification: e {:.8} (error {:.2e}, budget {:.2e}), theta0 {:.5} deg (error {:.2e} deg, budget {:.2e} deg)",
+            got.e,
+            got.e - e,
+            de,
+            got.theta0.to_degrees(),
+            err_th.to_degrees(),
+            dth.to_degrees()
+        );
+        assert!((got.e - e).abs() <= de, "{rpm} rpm: e {} for {e}", got.e);
+        assert!(err_th.abs() <= dth, "{rpm} rpm: theta0 error {err_th} rad");
     }
 }

@@ -4,7 +4,8 @@
 use crate::ecc_mt_speed::corrected_width;
 use crate::ecc_top::EncspeedEcc;
 use crate::sim::{core_outputs, signed};
-use golden::ecc_top::{EccTopInputs, EccTopOutputs};
+use golden::ecc_top::{EccTopInputs, EccTopOutputs, IDENT_SUM_BITS};
+use golden::ident_gatherer::GatherOutputs;
 use golden::params::Params;
 use rust_hdl::prelude::*;
 
@@ -38,6 +39,13 @@ fn coef_port(v: i64) -> Bits<32> {
     ((v as u64) & 0xffff_ffff).into()
 }
 
+/// An identification sum's port value, two's complement (Σ T is never negative, so the
+/// same reading serves it).
+fn sum(raw: u128) -> i128 {
+    let shift = 128 - IDENT_SUM_BITS;
+    ((raw << shift) as i128) >> shift
+}
+
 impl<const N: usize, const P: usize, const S: usize, const CW: usize> EccSim
     for Driven<N, P, S, CW>
 {
@@ -56,6 +64,7 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EccSim
         u.clear_faults.next = c.clear_faults;
         u.ecc_c.next = coef_port(inp.ecc_c);
         u.ecc_d.next = coef_port(inp.ecc_d);
+        u.ident_arm.next = inp.ident_arm;
         u.clock.next = Clock { clk: false };
         self.settle();
         self.uut.clock.next = Clock { clk: true };
@@ -67,6 +76,18 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EccSim
             mtc_strobe: u.mtc_strobe.val(),
             speed_n3c: signed(u.speed_n3c.val().to_u64(), S),
             n3c_strobe: u.n3c_strobe.val(),
+            ident: GatherOutputs {
+                done: u.ident_done.val(),
+                overflow: u.ident_overflow.val(),
+                count: u.ident_count.val().to_u64(),
+                t_min: u.ident_t_min.val().to_u64(),
+                p_min: u.ident_p_min.val().to_u64(),
+                t_max: u.ident_t_max.val().to_u64(),
+                p_max: u.ident_p_max.val().to_u64(),
+                sum_t: sum(u.ident_sum_t.val().to_u128()),
+                sum_sin: sum(u.ident_sum_sin.val().to_u128()),
+                sum_cos: sum(u.ident_sum_cos.val().to_u128()),
+            },
         }
     }
 

@@ -9,14 +9,19 @@
 //! ecc_c, ecc_d ─────── MtCorrector ─ speed_mtc, mtc_strobe
 //!                        │ speed_strobe, speed_n3, speed_position, speed_nep, speed_ndt
 //!                      N3Corrector ─ speed_n3c, n3c_strobe
+//!                        │ position, direction, index
+//! ident_arm ─ LineTap ─ IdentGatherer ─ ident_done, ident_count, ident_t_min … ident_sum_cos
 //! ```
 //!
 //! Ports: those of `encspeed_core` (docs/ports.md) and `ecc_c[31:0]`, `ecc_d[31:0]` (c =
 //! E·cos θ0, d = E·sin θ0, two's complement Q15.16 lines, sampled with each window),
 //! `speed_mtc[S-1:0]` (format of `speed_mt`) and `mtc_strobe`, `speed_n3c[S-1:0]` (format
-//! of `speed_n3`) and `n3c_strobe`.
+//! of `speed_n3`) and `n3c_strobe`; `ident_arm` and the gatherer's results `ident_*`
+//! (docs/ports.md).
 
 use crate::core::EncspeedCore;
+use crate::ident_gatherer::IdentGatherer;
+use crate::line_tap::LineTap;
 use crate::mt_corrector::MtCorrector;
 use crate::n3_corrector::N3Corrector;
 use golden::params::{Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
@@ -25,6 +30,12 @@ use rust_hdl::prelude::*;
 const FB: usize = FILTER_BITS as usize;
 const G: usize = ERROR_COUNT_BITS as usize;
 const C: usize = POSITION_BITS as usize;
+/// Line number bits of the identification (`golden::line_tap::LINE_BITS`).
+const LB: usize = 16;
+/// Period bits of the identification (`golden::line_tap::PERIOD_BITS`).
+const TB: usize = 32;
+/// Width of the identification sums (`golden::ecc_top::IDENT_SUM_BITS`).
+const WB: usize = LB + TB + 24;
 
 /// The core with the corrected M/T speed (N-bit counters, P = 2N + 1, S = N + 17, CW the
 /// corrected count's width).
@@ -128,9 +139,33 @@ pub struct EncspeedEcc<const N: usize, const P: usize, const S: usize, const CW:
     pub speed_n3c: Signal<Out, Bits<S>>,
     /// One cycle: `speed_n3c` was just written.
     pub n3c_strobe: Signal<Out, Bit>,
+    /// Gather the next revolution (index to index) for the identification.
+    pub ident_arm: Signal<In, Bit>,
+    /// The identification results are complete; sticky until `ident_arm`.
+    pub ident_done: Signal<Out, Bit>,
+    /// More than 2^16 lines between the index pulses (extra lines dropped).
+    pub ident_overflow: Signal<Out, Bit>,
+    /// Lines gathered.
+    pub ident_count: Signal<Out, Bits<17>>,
+    /// Shortest line period (cycles).
+    pub ident_t_min: Signal<Out, Bits<TB>>,
+    /// Line number of the edge that closed it.
+    pub ident_p_min: Signal<Out, Bits<LB>>,
+    /// Longest line period (cycles).
+    pub ident_t_max: Signal<Out, Bits<TB>>,
+    /// Line number of the edge that closed it.
+    pub ident_p_max: Signal<Out, Bits<LB>>,
+    /// Σ T, unsigned.
+    pub ident_sum_t: Signal<Out, Bits<WB>>,
+    /// Σ T·round(Q·sin(2πp/K)), signed.
+    pub ident_sum_sin: Signal<Out, Bits<WB>>,
+    /// Σ T·round(Q·cos(2πp/K)), signed.
+    pub ident_sum_cos: Signal<Out, Bits<WB>>,
     pub(crate) core: EncspeedCore<N, P, S>,
     corrector: MtCorrector<N, 16, S, CW>,
     n3_corrector: N3Corrector<N, S>,
+    line_tap: LineTap<C>,
+    gatherer: IdentGatherer<LB, TB, WB>,
     mode_reg: DFF<Bits<2>>,
     counts_per_rev: Signal<Local, Bits<C>>,
     shift: Signal<Local, Bits<2>>,
@@ -202,9 +237,22 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EncspeedEc
             mtc_strobe: Default::default(),
             speed_n3c: Default::default(),
             n3c_strobe: Default::default(),
+            ident_arm: Default::default(),
+            ident_done: Default::default(),
+            ident_overflow: Default::default(),
+            ident_count: Default::default(),
+            ident_t_min: Default::default(),
+            ident_p_min: Default::default(),
+            ident_t_max: Default::default(),
+            ident_p_max: Default::default(),
+            ident_sum_t: Default::default(),
+            ident_sum_sin: Default::default(),
+            ident_sum_cos: Default::default(),
             core: EncspeedCore::new(p),
             corrector: MtCorrector::new(p.lines()),
             n3_corrector: N3Corrector::new(p.lines()),
+            line_tap: LineTap::default(),
+            gatherer: IdentGatherer::new(p.lines()),
             mode_reg: Default::default(),
             counts_per_rev: Default::default(),
             shift: Default::default(),
@@ -225,7 +273,15 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
 {
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, core, corrector, n3_corrector);
+        clock!(
+            self,
+            clock,
+            core,
+            corrector,
+            n3_corrector,
+            line_tap,
+            gatherer
+        );
         dff_setup!(self, clock, mode_reg);
         self.core.reset.next = self.reset.val();
         self.core.enc_a.next = self.enc_a.val();
@@ -308,5 +364,29 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         self.n3c_strobe.next = self.n3_corrector.valid.val();
         self.speed_mtc.next = self.corrector.speed_mtc.val();
         self.mtc_strobe.next = self.corrector.valid.val();
+        // Identification: the core's line edges, gathered index to index after an arm.
+        self.line_tap.reset.next =
+            self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
+        self.line_tap.position.next = self.core.position.val();
+        self.line_tap.forward.next = self.core.direction.val();
+        self.line_tap.shift.next = self.shift.val();
+        self.line_tap.counts_per_rev.next = self.counts_per_rev.val();
+        self.gatherer.reset.next =
+            self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
+        self.gatherer.arm.next = self.ident_arm.val();
+        self.gatherer.index.next = self.core.index.val();
+        self.gatherer.line.next = self.line_tap.line.val();
+        self.gatherer.position.next = self.line_tap.line_position.val();
+        self.gatherer.period.next = self.line_tap.period.val();
+        self.ident_done.next = self.gatherer.done.val();
+        self.ident_overflow.next = self.gatherer.overflow.val();
+        self.ident_count.next = self.gatherer.count.val();
+        self.ident_t_min.next = self.gatherer.t_min.val();
+        self.ident_p_min.next = self.gatherer.p_min.val();
+        self.ident_t_max.next = self.gatherer.t_max.val();
+        self.ident_p_max.next = self.gatherer.p_max.val();
+        self.ident_sum_t.next = self.gatherer.sum_t.val();
+        self.ident_sum_sin.next = self.gatherer.sum_sin.val();
+        self.ident_sum_cos.next = self.gatherer.sum_cos.val();
     }
 }

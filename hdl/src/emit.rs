@@ -193,12 +193,19 @@ pub fn emit_ecc(p: &Params) -> Result<String, String> {
     let header = header(
         crate::ecc_sim::ECC_TOP_MODULE,
         p,
-        "encspeed_core (unchanged, every port) with its M/T and n3 speeds corrected for the once-per-revolution ripple of an eccentric disc, from the runtime coefficients ecc_c, ecc_d (Zhao; docs/eccentricity-hardware.md).",
-        &[format!(
-            "Correctors: sine table of {} entries x {} bits; mtc_strobe {mt} cycles after mt_strobe; n3c_strobe {n3} cycles after speed_strobe; a request arriving while busy replaces a pending one (the latest wins).",
-            p.lines(),
-            golden::ecc_top::TABLE_DATA_BITS
-        )],
+        "encspeed_core (unchanged, every port) with its M/T and n3 speeds corrected for the once-per-revolution ripple of an eccentric disc, from the runtime coefficients ecc_c, ecc_d, and the online identification of that eccentricity between two index pulses (Zhao; docs/eccentricity-hardware.md).",
+        &[
+            format!(
+                "Correctors: sine table of {} entries x {} bits; mtc_strobe {mt} cycles after mt_strobe; n3c_strobe {n3} cycles after speed_strobe; a request arriving while busy replaces a pending one (the latest wins).",
+                p.lines(),
+                golden::ecc_top::TABLE_DATA_BITS
+            ),
+            format!(
+                "Identification: a pulse on ident_arm (once an index has aligned the position) gathers the next revolution, index to index, of forward line edges; ident_done rises {} edges after the edge that raised the closing index; sums {} bits.",
+                golden::ecc_top::IDENT_DONE_AFTER_INDEX,
+                golden::ecc_top::IDENT_SUM_BITS
+            ),
+        ],
         &golden::ports::ecc_ports(p),
     );
     Ok(format!("{header}\n{body}"))
@@ -251,9 +258,13 @@ pub fn ports_markdown(p: &Params) -> String {
          ([eccentricity-hardware.md](eccentricity-hardware.md)). Latencies: `mtc_strobe` \
          comes {} edges after the `mt_strobe` of its window, `n3c_strobe` {} edges after \
          the `speed_strobe` of its n3; a request arriving while a corrector is busy \
-         replaces a pending one (the latest wins).\n\n",
+         replaces a pending one (the latest wins). After an `ident_arm` pulse, the \
+         identification gathers the next revolution (index to index) and `ident_done` \
+         rises {} edges after the edge that raised its closing \
+         `index`.\n\n",
         golden::mt_corrector::latency_cycles(p.counter_bits(), p.speed_frac_bits()),
         golden::n3_corrector::latency_cycles(p.counter_bits()),
+        golden::ecc_top::IDENT_DONE_AFTER_INDEX,
     ));
     md.push_str("| port | dir | width | meaning |\n|---|---|---|---|\n");
     let core = core_ports(p);

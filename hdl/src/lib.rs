@@ -34,6 +34,7 @@
 //! | [`EccN3`] | `ecc_n3.rs` | Rairán's n3 with the correction δ of its span: n3·(1 − δ) at Nep1 = 1, n3 − δ at Ndt1 = 1; 20 cycles |
 //! | [`IdentGatherer`] | `ident_gatherer.rs` | between two Z pulses: N, T_min/T_max and positions, Σ T, Σ T·sin, Σ T·cos; sticky `done` |
 //! | [`IdentMac`] | `ident_mac.rs` | the gatherer's two T × 24-bit multiply-adds (custom Verilog) |
+//! | [`LineTap`] | `line_tap.rs` | `encspeed_ecc`'s line edges for the gatherer: forward line steps, line number, period |
 //!
 //! [`build_core`] turns validated [`Params`](golden::params::Params) into a core of the right
 //! counter width behind the [`CoreSim`] trait (rust-hdl widths are const generics).
@@ -53,6 +54,7 @@ pub mod fault_flags;
 pub mod glitch_filter;
 pub mod ident_gatherer;
 pub mod ident_mac;
+pub mod line_tap;
 pub mod mode_scale;
 pub mod mt_corrector;
 pub mod mt_counter;
@@ -91,6 +93,7 @@ pub use fault_flags::FaultFlags;
 pub use glitch_filter::{glitch_filter_verilog, GlitchFilter};
 pub use ident_gatherer::{ident_gatherer_verilog, IdentGatherer};
 pub use ident_mac::IdentMac;
+pub use line_tap::LineTap;
 pub use mode_scale::ModeScale;
 pub use mt_corrector::MtCorrector;
 pub use mt_counter::{mt_counter_verilog, MtCounter};

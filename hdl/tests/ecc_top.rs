@@ -1,10 +1,13 @@
 //! `encspeed_ecc` (corrected M/T and n3) in rust-hdl against its bit-true model (`golden::ecc_top`), cycle for
 //! cycle, on an eccentric disc driven forward, backward and through reversals, in x1, x2
 //! and x4, with random coefficients and dt short enough that windows queue in the
-//! corrector (the latest wins).
+//! corrector (the latest wins), with the identification armed at a random cycle after the
+//! first index: on a
+//! forward run long enough for the armed revolution, the gathered count is K and Σ T the
+//! revolution's length in cycles to ±1 (worked from the speed, not by the code).
 
 use golden::bittrue::CoreInputs;
-use golden::ecc_top::{disc_inputs, EccTopInputs, EccTopModel};
+use golden::ecc_top::{check_revolution, disc_inputs, ArmedModel, EccTopInputs};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
 use golden::params::{Params, Spec};
@@ -39,6 +42,7 @@ proptest! {
         cfg_dt in prop::sample::select(vec![0u64, 90, 400, 3000]),
         coef in (-(1i64 << 31)..(1i64 << 31), -(1i64 << 31)..(1i64 << 31)),
         realistic in any::<bool>(),
+        arm_delay in 0u64..3_000,
     ) {
         let p = params(lines);
         let disc = EccentricDisc::new(lines, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
@@ -60,18 +64,27 @@ proptest! {
             core: CoreInputs { cfg_dt, cfg_mode: mode, cfg_z_mode: 1, ..Default::default() },
             ecc_c: c,
             ecc_d: d,
+            ident_arm: false,
         };
-        let inputs: Vec<EccTopInputs> = disc_inputs(initial, &changes, cycles, config).collect();
-        let mut model = EccTopModel::new(&p);
+        let mut model = ArmedModel::new(&p, arm_delay);
         let mut sim = build_ecc(&p).unwrap();
         let (mut strobes, mut n3_strobes) = (0, 0);
-        for (k, i) in inputs.iter().enumerate() {
-            let want = model.step(*i);
-            let got = sim.step(i);
+        let mut ident = Default::default();
+        for (k, i) in disc_inputs(initial, &changes, cycles, config).enumerate() {
+            let (i, want) = model.step(i);
+            let got = sim.step(&i);
             prop_assert_eq!(got, want, "cycle {}", k);
+            ident = want.ident;
             strobes += usize::from(want.mtc_strobe);
             n3_strobes += usize::from(want.n3c_strobe);
         }
         prop_assert!(strobes > 0 && n3_strobes > 0, "no corrected speed in {} cycles", cycles);
+        // The armed revolution: from the first index after the arm to the next one, within
+        // two revolutions of the arm.
+        let rev_cycles = CLOCK / rps;
+        let armed_for = model.arm_at().map_or(0.0, |a| (cycles - a) as f64);
+        if !reverse && armed_for > 2.0 * rev_cycles + 100.0 {
+            prop_assert_eq!(check_revolution(&ident, lines, rev_cycles), Ok(()));
+        }
     }
 }

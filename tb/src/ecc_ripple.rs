@@ -3,13 +3,17 @@
 //! the M/T and n3 estimates against the true mean speed, their figures and budgets, a CSV
 //! and an SVG. Used by the test `tb/tests/ecc_top.rs` (which also checks every strobe of
 //! the Verilog against the bit-true model) and by `encspeed ecc-ripple` (the figures of
-//! docs/eccentricity-hardware.md).
+//! docs/eccentricity-hardware.md). Every run also arms the Verilog's identification at
+//! its first index ([`Identification`]), and a run can load the corrector with the e and
+//! θ0 that the Verilog identified ([`RippleSetup::loaded`]): the whole loop of the IP.
 
-use crate::ecc_verilator::{EccStrobe, EccVerilated, EventRun};
+use crate::ecc_verilator::{EccStrobe, EccVerilated, EventLog, EventRun};
 use golden::ecc_delta::coefficients;
 use golden::eccentric::correct::once_per_rev;
+use golden::eccentric::identify::Identified;
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
+use golden::ident_gatherer::{error_budget, identify_from_sums, GatherOutputs};
 use golden::params::Params;
 use golden::plant::{Profile, Sample};
 use golden::ports::Latency;
@@ -23,7 +27,8 @@ use std::path::Path;
 pub const START_ANGLE_REV: f64 = -0.01;
 
 /// A constant-speed run on a rigid eccentric disc, x1 decoding, cfg_z_mode = 1, the
-/// coefficients the identification would give (`golden::ecc_delta::coefficients`).
+/// corrector loaded with the coefficients (`golden::ecc_delta::coefficients`) of the disc's
+/// own e and θ0 or of identified ones.
 #[derive(Clone, Copy, Debug)]
 pub struct RippleSetup {
     /// Shaft speed, r/min.
@@ -34,6 +39,8 @@ pub struct RippleSetup {
     pub e: f64,
     /// Eccentricity angle θ0, rad.
     pub theta0: f64,
+    /// (e, θ0 in rad) the corrector is loaded with; `None`: the disc's own.
+    pub loaded: Option<(f64, f64)>,
 }
 
 /// The encoder levels of a run and where its measurement starts.
@@ -77,9 +84,10 @@ impl RippleSetup {
         })
     }
 
-    /// `(ecc_c, ecc_d)` for this disc.
+    /// `(ecc_c, ecc_d)` the corrector is loaded with.
     pub fn coefficients(&self, p: &Params) -> (i64, i64) {
-        coefficients(p.lines(), self.e, self.theta0)
+        let (e, theta0) = self.loaded.unwrap_or((self.e, self.theta0));
+        coefficients(p.lines(), e, theta0)
     }
 
     /// The event-mode configuration of the run.
@@ -92,8 +100,75 @@ impl RippleSetup {
             cfg_z_mode: 1,
             ecc_c,
             ecc_d,
+            arm_delay: Some(0),
         }
     }
+}
+
+/// The Verilog's identification of one revolution, against the disc's e and θ0.
+#[derive(Clone, Copy, Debug)]
+pub struct Identification {
+    /// Cycle at which `ident_done` rose.
+    pub cycle: u64,
+    /// The gathered results.
+    pub gathered: GatherOutputs,
+    /// e and θ0 from the sums (`golden::ident_gatherer::identify_from_sums`).
+    pub identified: Identified,
+    /// Identified − true e.
+    pub e_error: f64,
+    /// Identified − true θ0, rad, wrapped to ±π.
+    pub theta0_error: f64,
+    /// `golden::ident_gatherer::error_budget`: (e, θ0 rad).
+    pub budget: (f64, f64),
+}
+
+impl Identification {
+    /// The first identification of `log` for `setup` on `p`, if any.
+    pub fn of(p: &Params, setup: &RippleSetup, log: &EventLog) -> Option<Self> {
+        let &(cycle, g) = log.ident.first()?;
+        let identified = identify_from_sums(p.lines(), g.sum_t, g.sum_sin, g.sum_cos, Model::Rigid);
+        let pi = std::f64::consts::PI;
+        Some(Identification {
+            cycle,
+            gathered: g,
+            identified,
+            e_error: identified.e - setup.e,
+            theta0_error: (identified.theta0 - setup.theta0 + pi).rem_euclid(TAU) - pi,
+            budget: error_budget(g.sum_t as f64, setup.e),
+        })
+    }
+
+    /// One line: e and θ0 identified, their errors and budgets.
+    pub fn summary(&self) -> String {
+        format!(
+            "identified on the Verilog ({} lines, {} cycles): e = {:.8} (error {:+.2e}, {:+.4} %, budget {:.2e}), theta0 = {:.5} deg (error {:+.2e} deg, budget {:.2e} deg)",
+            self.gathered.count,
+            self.gathered.sum_t,
+            self.identified.e,
+            self.e_error,
+            self.e_error / (self.identified.e - self.e_error) * 100.0,
+            self.budget.0,
+            self.identified.theta0.to_degrees(),
+            self.theta0_error.to_degrees(),
+            self.budget.1.to_degrees()
+        )
+    }
+}
+
+/// Identify the disc of `setup` on the Verilog: a run of 2.1 revolutions (the first index
+/// aligns the position and arms the gatherer, the next two bound the revolution it
+/// gathers).
+pub fn identify_on_verilog(
+    sim: &EccVerilated,
+    p: &Params,
+    setup: &RippleSetup,
+) -> Result<Identification, String> {
+    let short = RippleSetup {
+        revs: 2.1,
+        ..*setup
+    };
+    let (log, _) = run_verilog(sim, p, &short)?;
+    Identification::of(p, setup, &log).ok_or_else(|| "no identification in 2.1 revolutions".into())
 }
 
 /// Figures of (shaft angle, relative error) samples over whole revolutions.
@@ -282,20 +357,20 @@ fn whole_revolutions<T>(v: Vec<T>, angle: impl Fn(&T) -> f64, revs: f64) -> Vec<
         .collect()
 }
 
-/// Run `setup` on the compiled Verilog `sim` for `p` (event mode): every strobe, and the
-/// cycle after which the position is aligned.
+/// Run `setup` on the compiled Verilog `sim` for `p` (event mode): every strobe and
+/// identification, and the stimulus (with the cycle after which the position is aligned).
 pub fn run_verilog(
     sim: &EccVerilated,
     p: &Params,
     setup: &RippleSetup,
-) -> Result<(Vec<EccStrobe>, Stimulus), String> {
+) -> Result<(EventLog, Stimulus), String> {
     let stim = setup.stimulus(p)?;
-    let strobes = sim.run_events(
+    let log = sim.run_events(
         &setup.event_run(p, stim.cycles),
         stim.initial,
         &stim.changes,
     )?;
-    Ok((strobes, stim))
+    Ok((log, stim))
 }
 
 /// Write the figure of `ripple` (Zhao's Figs. 6 and 7): the measured speeds in r/min over

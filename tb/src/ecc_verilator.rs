@@ -6,7 +6,8 @@
 
 use crate::stream_harness;
 use crate::verilator::{input_line, outputs_of_fields, signed};
-use golden::ecc_top::{EccTopInputs, EccTopOutputs};
+use golden::ecc_top::{EccTopInputs, EccTopOutputs, IDENT_SUM_BITS};
+use golden::ident_gatherer::GatherOutputs;
 use golden::plant::Sample;
 use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
@@ -55,6 +56,24 @@ pub struct EccStrobe {
     pub speed_ndt: u64,
 }
 
+impl EccStrobe {
+    /// The event-mode line of the outputs `o` after edge `cycle`, as the harness prints
+    /// it: `None` if no speed strobe is high.
+    pub fn of(cycle: u64, o: &EccTopOutputs) -> Option<EccStrobe> {
+        let c = &o.core;
+        (c.baseline_strobe || o.mtc_strobe || c.speed_strobe || o.n3c_strobe).then_some(EccStrobe {
+            cycle,
+            speed_mt: c.baseline_strobe.then_some(c.speed_mt),
+            speed_mtc: o.mtc_strobe.then_some(o.speed_mtc),
+            speed_n3: c.speed_strobe.then_some(c.speed_n3),
+            speed_n3c: o.n3c_strobe.then_some(o.speed_n3c),
+            position: c.position,
+            speed_nep: c.speed_nep,
+            speed_ndt: c.speed_ndt,
+        })
+    }
+}
+
 /// The configuration of an event-mode run.
 #[derive(Clone, Copy, Debug)]
 pub struct EventRun {
@@ -70,6 +89,42 @@ pub struct EventRun {
     pub ecc_c: i64,
     /// `ecc_d`, Q15.16.
     pub ecc_d: i64,
+    /// Raise `ident_arm` this many cycles after the first `index` (the position is aligned
+    /// from then on); `None`: never.
+    pub arm_delay: Option<u64>,
+}
+
+/// What an event-mode run printed.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EventLog {
+    /// Every cycle with a speed strobe.
+    pub strobes: Vec<EccStrobe>,
+    /// (cycle, results) at each rise of `ident_done`.
+    pub ident: Vec<(u64, GatherOutputs)>,
+}
+
+/// Fields of the identification in a harness line (IDENT in ecc_harness.cpp).
+const IDENT_FIELDS: usize = 16;
+
+/// The identification results from the harness's IDENT fields.
+fn ident_of_fields(f: &[u64]) -> GatherOutputs {
+    let wide = |w: &[u64]| -> i128 {
+        let raw = u128::from(w[0]) | u128::from(w[1]) << 32 | u128::from(w[2]) << 64;
+        let shift = 128 - IDENT_SUM_BITS;
+        ((raw << shift) as i128) >> shift
+    };
+    GatherOutputs {
+        done: f[0] != 0,
+        overflow: f[1] != 0,
+        count: f[2],
+        t_min: f[3],
+        p_min: f[4],
+        t_max: f[5],
+        p_max: f[6],
+        sum_t: wide(&f[7..10]),
+        sum_sin: wide(&f[10..13]),
+        sum_cos: wide(&f[13..16]),
+    }
 }
 
 fn port32(v: i64) -> u64 {
@@ -105,14 +160,15 @@ impl EccVerilated {
             .iter()
             .map(|i| {
                 format!(
-                    "{} {} {}\n",
+                    "{} {} {} {}\n",
                     input_line(&i.core),
                     port32(i.ecc_c),
-                    port32(i.ecc_d)
+                    port32(i.ecc_d),
+                    u8::from(i.ident_arm)
                 )
             })
             .collect();
-        let rows = stream_harness::stream(&self.exe, text, vcd, 36)?;
+        let rows = stream_harness::stream(&self.exe, text, vcd, 36 + IDENT_FIELDS)?;
         Ok(rows
             .iter()
             .map(|f| EccTopOutputs {
@@ -121,18 +177,19 @@ impl EccVerilated {
                 mtc_strobe: f[33] != 0,
                 speed_n3c: signed(f[34], self.speed_bits),
                 n3c_strobe: f[35] != 0,
+                ident: ident_of_fields(&f[36..]),
             })
             .collect())
     }
 
     /// Run `run.cycles` cycles of the levels `initial` then `changes` (cycle, levels from
-    /// it on); the cycles with a strobe.
+    /// it on); the cycles with a strobe and the identifications.
     pub fn run_events(
         &self,
         run: &EventRun,
         initial: Sample,
         changes: &[(u64, Sample)],
-    ) -> Result<Vec<EccStrobe>, String> {
+    ) -> Result<EventLog, String> {
         let mut child = Command::new(&self.exe)
             .arg("--events")
             .args([
@@ -142,6 +199,7 @@ impl EccVerilated {
                 run.cfg_z_mode.to_string(),
                 port32(run.ecc_c).to_string(),
                 port32(run.ecc_d).to_string(),
+                run.arm_delay.map_or(-1, |d| d as i64).to_string(),
             ])
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
@@ -157,20 +215,31 @@ impl EccVerilated {
         let mut stdin = child.stdin.take().expect("piped stdin");
         let writer = std::thread::spawn(move || stdin.write_all(text.as_bytes()));
         let stdout = BufReader::new(child.stdout.take().expect("piped stdout"));
-        let mut out = Vec::new();
+        let mut out = EventLog::default();
         for l in stdout.lines() {
             let l = l.map_err(|e| e.to_string())?;
-            let f: Vec<u64> = l
+            let (ident, fields) = match l.strip_prefix("I ") {
+                Some(rest) => (true, rest),
+                None => (false, l.as_str()),
+            };
+            let f: Vec<u64> = fields
                 .split_whitespace()
                 .map(|x| {
                     x.parse()
                         .map_err(|e| format!("bad harness output {l:?}: {e}"))
                 })
                 .collect::<Result<_, String>>()?;
+            if ident {
+                if f.len() != 1 + IDENT_FIELDS {
+                    return Err(format!("bad harness output {l:?}"));
+                }
+                out.ident.push((f[0], ident_of_fields(&f[1..])));
+                continue;
+            }
             if f.len() != 12 {
                 return Err(format!("bad harness output {l:?}"));
             }
-            out.push(EccStrobe {
+            out.strobes.push(EccStrobe {
                 cycle: f[0],
                 speed_mt: (f[1] != 0).then(|| signed(f[2], self.speed_bits)),
                 speed_mtc: (f[3] != 0).then(|| signed(f[4], self.speed_bits)),

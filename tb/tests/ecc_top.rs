@@ -6,14 +6,17 @@
 //!   e = 0.35/30 (K = 1024, θ0 = 50°, 100 MHz, dt = 1 ms, x1) at 30, 600 and 6000 r/min,
 //!   every strobe of the Verilog equal to the model's, and each corrected estimate within
 //!   its quantisation budget ([`tb::ecc_ripple`]);
-//! - the same for n3 (`speed_n3`, `speed_n3c`) against Rairán's bound for the hardware.
+//! - the same for n3 (`speed_n3`, `speed_n3c`) against Rairán's bound for the hardware;
+//! - the identification the Verilog gathers (armed at the first index) against the disc's
+//!   e and θ0 within `golden::ident_gatherer::error_budget`, equal to the model's, and the
+//!   whole loop: identify, load the corrector, correct.
 //!
 //! Run with `--nocapture` for the figures of docs/eccentricity-hardware.md; the samples go
 //! to target/ecc-ripple/ (CSV and SVG).
 
 use golden::bittrue::CoreInputs;
 use golden::ecc_delta::coefficients;
-use golden::ecc_top::{disc_inputs, EccTopInputs, EccTopModel};
+use golden::ecc_top::{check_revolution, disc_inputs, ArmedModel, EccTopInputs};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
 use golden::params::{Params, Spec};
@@ -21,8 +24,11 @@ use golden::plant::Profile;
 use hdl::ecc_sim::build_ecc;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
-use tb::ecc_ripple::{draw_svg, figures, run_verilog, Ripple, RippleSetup};
-use tb::ecc_verilator::{EccStrobe, EccVerilated};
+use tb::ecc_ripple::{
+    draw_svg, figures, identify_on_verilog, run_verilog, Identification, Ripple, RippleSetup,
+    Stimulus,
+};
+use tb::ecc_verilator::{EccStrobe, EccVerilated, EventLog};
 
 fn small(lines: u32) -> Params {
     Params::new(Spec {
@@ -53,6 +59,7 @@ proptest! {
         cfg_dt in prop::sample::select(vec![0u64, 90, 400, 3000]),
         coef in (-(1i64 << 31)..(1i64 << 31), -(1i64 << 31)..(1i64 << 31)),
         realistic in any::<bool>(),
+        arm_delay in 0u64..3_000,
     ) {
         let p = small(lines);
         let disc = EccentricDisc::new(lines, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
@@ -70,19 +77,77 @@ proptest! {
             core: CoreInputs { cfg_dt, cfg_mode: mode, cfg_z_mode: 1, ..Default::default() },
             ecc_c: c,
             ecc_d: d,
+            ident_arm: false,
         };
-        let inputs: Vec<EccTopInputs> = disc_inputs(initial, &changes, cycles, config).collect();
-        let mut model = EccTopModel::new(&p);
+        // The model first: it decides the arm's cycle (after its first index).
+        let mut model = ArmedModel::new(&p, arm_delay);
+        let (inputs, wanted): (Vec<_>, Vec<_>) =
+            disc_inputs(initial, &changes, cycles, config).map(|i| model.step(i)).unzip();
         let got = verilated(&p).run(&inputs, None).unwrap();
         let (mut strobes, mut n3_strobes) = (0, 0);
-        for (k, (i, g)) in inputs.iter().zip(&got).enumerate() {
-            let want = model.step(*i);
-            prop_assert_eq!(*g, want, "cycle {}", k);
+        for (k, (g, want)) in got.iter().zip(&wanted).enumerate() {
+            prop_assert_eq!(g, want, "cycle {}", k);
             strobes += usize::from(want.mtc_strobe);
             n3_strobes += usize::from(want.n3c_strobe);
         }
         prop_assert!(strobes > 0 && n3_strobes > 0);
+        // A forward run armed for more than two revolutions has gathered one.
+        let rev_cycles = 1e6 / rps;
+        let armed_for = model.arm_at().map_or(0.0, |a| (cycles - a) as f64);
+        if !reverse && armed_for > 2.0 * rev_cycles + 100.0 {
+            prop_assert_eq!(check_revolution(&wanted[wanted.len() - 1].ident, lines, rev_cycles), Ok(()));
+        }
     }
+}
+
+/// What the bit-true model gives for an event-mode run of `setup` (armed at the first
+/// index, as the harness does), streamed: runs of 2·10^8 cycles need no storage.
+struct ModelLog {
+    strobes: Vec<EccStrobe>,
+    ident: Vec<(u64, golden::ident_gatherer::GatherOutputs)>,
+    first_index: u64,
+}
+
+fn model_log(p: &Params, setup: &RippleSetup, stim: &Stimulus) -> ModelLog {
+    let (c, d) = setup.coefficients(p);
+    let config = EccTopInputs {
+        core: CoreInputs {
+            cfg_z_mode: 1,
+            ..Default::default()
+        },
+        ecc_c: c,
+        ecc_d: d,
+        ident_arm: false,
+    };
+    let mut model = ArmedModel::new(p, 0);
+    let mut log = ModelLog {
+        strobes: Vec::new(),
+        ident: Vec::new(),
+        first_index: u64::MAX,
+    };
+    let mut was_done = false;
+    for (k, i) in disc_inputs(stim.initial, &stim.changes, stim.cycles, config).enumerate() {
+        let k = k as u64;
+        let (_, o) = model.step(i);
+        if o.core.index {
+            log.first_index = log.first_index.min(k);
+        }
+        if o.ident.done && !was_done {
+            log.ident.push((k, o.ident));
+        }
+        was_done = o.ident.done;
+        log.strobes.extend(EccStrobe::of(k, &o));
+    }
+    log
+}
+
+/// The shipped `generated/encspeed_ecc.v` (default parameters `p`), compiled.
+fn shipped(p: &Params) -> EccVerilated {
+    let shipped = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/encspeed_ecc.v"),
+    )
+    .expect("generated/encspeed_ecc.v");
+    EccVerilated::build(&shipped, p.speed_bits()).unwrap()
 }
 
 /// The rigid disc at e = 0.35/30, θ0 = 50°, on the shipped `generated/encspeed_ecc.v`
@@ -90,11 +155,7 @@ proptest! {
 #[test]
 fn corrected_ripple_on_verilog() {
     let p = Params::new(Spec::default()).unwrap();
-    let shipped = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/encspeed_ecc.v"),
-    )
-    .expect("generated/encspeed_ecc.v");
-    let sim = EccVerilated::build(&shipped, p.speed_bits()).unwrap();
+    let sim = shipped(&p);
     let dir = tb::target_dir().join("ecc-ripple");
     std::fs::create_dir_all(&dir).unwrap();
     for (rpm, revs) in [(30.0, 1.0), (600.0, 3.0), (6000.0, 20.0)] {
@@ -104,52 +165,49 @@ fn corrected_ripple_on_verilog() {
             revs,
             e,
             theta0: 50f64.to_radians(),
+            loaded: None,
         };
-        let (got, stim) = run_verilog(&sim, &p, &setup).unwrap();
-        // The model, cycle by cycle, the same strobes.
-        let (c, d) = setup.coefficients(&p);
-        let config = EccTopInputs {
-            core: CoreInputs {
-                cfg_z_mode: 1,
-                ..Default::default()
-            },
-            ecc_c: c,
-            ecc_d: d,
-        };
-        let mut model = EccTopModel::new(&p);
-        let mut want = Vec::new();
-        let mut first_index = None;
-        for (k, i) in disc_inputs(stim.initial, &stim.changes, stim.cycles, config).enumerate() {
-            let k = k as u64;
-            let o = model.step(i);
-            if o.core.index && first_index.is_none() {
-                first_index = Some(k);
-            }
-            if o.core.baseline_strobe || o.mtc_strobe || o.core.speed_strobe || o.n3c_strobe {
-                want.push(EccStrobe {
-                    cycle: k,
-                    speed_mt: o.core.baseline_strobe.then_some(o.core.speed_mt),
-                    speed_mtc: o.mtc_strobe.then_some(o.speed_mtc),
-                    speed_n3: o.core.speed_strobe.then_some(o.core.speed_n3),
-                    speed_n3c: o.n3c_strobe.then_some(o.speed_n3c),
-                    position: o.core.position,
-                    speed_nep: o.core.speed_nep,
-                    speed_ndt: o.core.speed_ndt,
-                });
-            }
-        }
-        assert_eq!(got.len(), want.len(), "{rpm} rpm: strobes");
-        for (g, w) in got.iter().zip(&want) {
+        let (log, stim) = run_verilog(&sim, &p, &setup).unwrap();
+        let want = model_log(&p, &setup, &stim);
+        assert_eq!(log.strobes.len(), want.strobes.len(), "{rpm} rpm: strobes");
+        for (g, w) in log.strobes.iter().zip(&want.strobes) {
             assert_eq!(g, w, "{rpm} rpm: Verilog and model differ");
         }
+        assert_eq!(log.ident, want.ident, "{rpm} rpm: identification");
         // The estimates kept count from line 0: the index was processed by then.
         assert!(
-            first_index.expect("an index edge") <= stim.aligned_after,
-            "{rpm} rpm: index at {first_index:?}, after {}",
+            want.first_index <= stim.aligned_after,
+            "{rpm} rpm: index at {}, after {}",
+            want.first_index,
             stim.aligned_after
         );
-        let ripple = Ripple::new(&p, setup, &got, stim.aligned_after);
+        let ripple = Ripple::new(&p, setup, &log.strobes, stim.aligned_after);
         println!("{}", ripple.summary());
+        // The identification armed at the first index: one revolution gathered in the
+        // runs of more than two, e and θ0 within their budget.
+        match Identification::of(&p, &setup, &log) {
+            Some(id) => {
+                println!("{}", id.summary());
+                assert_eq!(
+                    check_revolution(&id.gathered, p.lines(), 1e8 * 60.0 / rpm),
+                    Ok(())
+                );
+                assert!(
+                    id.e_error.abs() <= id.budget.0,
+                    "{rpm} rpm: {}",
+                    id.summary()
+                );
+                assert!(
+                    id.theta0_error.abs() <= id.budget.1,
+                    "{rpm} rpm: {}",
+                    id.summary()
+                );
+            }
+            None => assert!(
+                revs < 2.1,
+                "{rpm} rpm: no identification in {revs} revolutions"
+            ),
+        }
         std::fs::write(dir.join(format!("rpm{rpm}.csv")), ripple.csv()).unwrap();
         draw_svg(
             &dir.join(format!("rpm{rpm}.svg")),
@@ -207,5 +265,60 @@ fn corrected_ripple_on_verilog() {
                 fa.h1_ppm
             );
         }
+    }
+}
+
+/// The IP's whole loop on the shipped Verilog: its identification gathers one revolution
+/// (armed at the first index), e and θ0 follow from the sums, the corrector is loaded with
+/// them, and the once-per-revolution ripple of M/T falls more than 1000× as with the
+/// disc's true coefficients, every estimate within its budget plus the ripple the
+/// identification's error leaves (|Δe| + e·|Δθ0| of the speed).
+#[test]
+fn identified_then_corrected_on_verilog() {
+    let p = Params::new(Spec::default()).unwrap();
+    let sim = shipped(&p);
+    for (rpm, revs) in [(6000.0, 20.0), (600.0, 3.0)] {
+        let e = 0.35 / 30.0;
+        let mut setup = RippleSetup {
+            rpm,
+            revs,
+            e,
+            theta0: 50f64.to_radians(),
+            loaded: None,
+        };
+        let id = identify_on_verilog(&sim, &p, &setup).unwrap();
+        println!("{}", id.summary());
+        assert!(
+            id.e_error.abs() <= id.budget.0,
+            "{rpm} rpm: {}",
+            id.summary()
+        );
+        assert!(
+            id.theta0_error.abs() <= id.budget.1,
+            "{rpm} rpm: {}",
+            id.summary()
+        );
+        // The goal, by a wide margin: e within 1 %, θ0 within 1°.
+        assert!(id.e_error.abs() < 0.01 * e && id.theta0_error.abs() < 1f64.to_radians());
+        setup.loaded = Some((id.identified.e, id.identified.theta0));
+        let (log, stim): (EventLog, _) = run_verilog(&sim, &p, &setup).unwrap();
+        let ripple = Ripple::new(&p, setup, &log.strobes, stim.aligned_after);
+        println!(
+            "corrected with the identified e and theta0:\n{}",
+            ripple.summary()
+        );
+        let (b, a) = (figures(&ripple.mt_before), figures(&ripple.mt_after));
+        let left = (id.e_error.abs() + e * id.theta0_error.abs()) * 1e6;
+        assert!(
+            a.worst_ppm <= ripple.mt_budget_ppm + left,
+            "{rpm} rpm: worst {} ppm, budget {} + {left}",
+            a.worst_ppm,
+            ripple.mt_budget_ppm
+        );
+        assert!(
+            b.h1_ppm / a.h1_ppm > 1000.0,
+            "{rpm} rpm: ratio {}",
+            b.h1_ppm / a.h1_ppm
+        );
     }
 }

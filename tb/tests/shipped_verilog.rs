@@ -131,9 +131,9 @@ fn yosys_synthesises_it_for_ice40_without_latches() {
     assert!(log.contains("SB_LUT4"), "no logic synthesised:\n{log}");
 }
 
-/// `generated/encspeed_ecc.v` synthesises without latches, and each corrector's sine table
-/// (K = 1024 words of 24 bits = 24 kbit) maps to block RAM: 6 SB_RAM40_4K (4 kbit) each,
-/// 12 in all, by hand.
+/// `generated/encspeed_ecc.v` synthesises without latches, and its four sine tables (one
+/// per corrector, the identification's sine and cosine; K = 1024 words of 24 bits = 24
+/// kbit each) map to block RAM: 6 SB_RAM40_4K (4 kbit) each, 24 in all, by hand.
 #[test]
 fn yosys_synthesises_the_ecc_top_with_its_tables_in_block_ram() {
     let v = std::fs::read_to_string(generated("encspeed_ecc.v")).expect("generated/encspeed_ecc.v");
@@ -143,7 +143,7 @@ fn yosys_synthesises_the_ecc_top_with_its_tables_in_block_ram() {
         .rev()
         .find_map(|l| l.trim().strip_prefix("SB_RAM40_4K"))
         .map(|n| n.trim().parse::<u32>().unwrap());
-    assert_eq!(brams, Some(12), "block RAMs:\n{log}");
+    assert_eq!(brams, Some(24), "block RAMs:\n{log}");
 }
 
 /// yosys `synth_ice40` of `top` in `verilog`, `check -assert`, no latch inferred; the log.

@@ -2,16 +2,23 @@
 //
 // Stream mode (default): one line per clock cycle on stdin,
 //   "reset enc_a enc_b enc_z cfg_dt cfg_timeout cfg_filter cfg_mode cfg_z_mode clear_faults
-//    ecc_c ecc_d"   (ecc_c, ecc_d as unsigned 32-bit port values)
+//    ecc_c ecc_d ident_arm"   (ecc_c, ecc_d as unsigned 32-bit port values)
 // applies the inputs, gives one rising edge and prints the core's 32 outputs in the order of
-// harness.cpp, then "speed_mtc mtc_strobe speed_n3c n3c_strobe" (raw unsigned port values).
+// harness.cpp, then "speed_mtc mtc_strobe speed_n3c n3c_strobe" and the identification
+// (IDENT below) (raw unsigned port values).
 //
-// Event mode: "--events CYCLES CFG_DT CFG_MODE CFG_Z_MODE ECC_C ECC_D" reads lines "k a b z"
-// (levels of A, B, Z from cycle k on, k increasing), runs CYCLES cycles (reset for the first
-// 3) and prints one line per cycle in which a speed strobe is high:
+// Event mode: "--events CYCLES CFG_DT CFG_MODE CFG_Z_MODE ECC_C ECC_D ARM_DELAY" reads lines
+// "k a b z" (levels of A, B, Z from cycle k on, k increasing), runs CYCLES cycles (reset for
+// the first 3), raises ident_arm for one cycle ARM_DELAY cycles after the first index
+// (ARM_DELAY < 0: never), and prints one line per cycle in which a speed strobe is high:
 //   "cycle baseline_strobe speed_mt mtc_strobe speed_mtc speed_strobe speed_n3 n3c_strobe
 //    speed_n3c position speed_nep speed_ndt"
+// and, in the cycle ident_done rises, "I cycle IDENT"
 // (the form of a long run: a revolution at 30 r/min is 2e8 cycles at 100 MHz).
+//
+// IDENT: "ident_done ident_overflow ident_count ident_t_min ident_p_min ident_t_max
+// ident_p_max" then ident_sum_t, ident_sum_sin, ident_sum_cos as three 32-bit words each,
+// least significant first (72-bit ports).
 //
 // Optional "--vcd PATH" (stream mode) writes a VCD of every signal.
 #include "Vencspeed_ecc.h"
@@ -32,6 +39,16 @@ static void edge(Vencspeed_ecc& top) {
     top.eval();
 }
 
+static void print_ident(Vencspeed_ecc& top) {
+    printf("%u %u %u %u %u %u %u", (unsigned)top.ident_done, (unsigned)top.ident_overflow,
+           (unsigned)top.ident_count, (unsigned)top.ident_t_min, (unsigned)top.ident_p_min,
+           (unsigned)top.ident_t_max, (unsigned)top.ident_p_max);
+    for (int w = 0; w < 3; ++w) printf(" %u", (unsigned)top.ident_sum_t[w]);
+    for (int w = 0; w < 3; ++w) printf(" %u", (unsigned)top.ident_sum_sin[w]);
+    for (int w = 0; w < 3; ++w) printf(" %u", (unsigned)top.ident_sum_cos[w]);
+    printf("\n");
+}
+
 static int events(Vencspeed_ecc& top, char** a) {
     u cycles = strtoull(a[0], nullptr, 10);
     top.cfg_dt = strtoull(a[1], nullptr, 10);
@@ -39,6 +56,9 @@ static int events(Vencspeed_ecc& top, char** a) {
     top.cfg_z_mode = strtoull(a[3], nullptr, 10);
     top.ecc_c = strtoull(a[4], nullptr, 10);
     top.ecc_d = strtoull(a[5], nullptr, 10);
+    long long arm_delay = strtoll(a[6], nullptr, 10);
+    long long arm_at = -1;
+    bool was_done = false;
     top.cfg_timeout = 0;
     top.cfg_filter = 0;
     top.clear_faults = 0;
@@ -59,7 +79,14 @@ static int events(Vencspeed_ecc& top, char** a) {
             read_next();
         }
         top.reset = k < 3;
+        top.ident_arm = arm_at >= 0 && (u)arm_at == k;
         edge(top);
+        if (top.index && arm_at < 0 && arm_delay >= 0) arm_at = (long long)k + 1 + arm_delay;
+        if (top.ident_done && !was_done) {
+            printf("I %llu ", k);
+            print_ident(top);
+        }
+        was_done = top.ident_done;
         if (top.baseline_strobe || top.mtc_strobe || top.speed_strobe || top.n3c_strobe) {
             printf("%llu %u %llu %u %llu %u %llu %u %llu %llu %llu %llu\n", k,
                    (unsigned)top.baseline_strobe, (u)top.speed_mt, (unsigned)top.mtc_strobe,
@@ -80,12 +107,12 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--vcd") && i + 1 < argc) {
             vcd_path = argv[++i];
-        } else if (!strcmp(argv[i], "--events") && i + 6 < argc) {
+        } else if (!strcmp(argv[i], "--events") && i + 7 < argc) {
             int rc = events(top, argv + i + 1);
             top.final();
             return rc;
         } else {
-            fprintf(stderr, "usage: %s [--vcd PATH] | --events CYCLES DT MODE ZMODE C D\n",
+            fprintf(stderr, "usage: %s [--vcd PATH] | --events CYCLES DT MODE ZMODE C D ARM_DELAY\n",
                     argv[0]);
             return 2;
         }
@@ -109,10 +136,10 @@ int main(int argc, char** argv) {
     char line[320];
     u cycle = 0;
     while (fgets(line, sizeof line, stdin)) {
-        unsigned r, a, b, z, filter, mode, zmode, clear;
+        unsigned r, a, b, z, filter, mode, zmode, clear, arm;
         u dt, timeout, c, d;
-        if (sscanf(line, "%u %u %u %u %llu %llu %u %u %u %u %llu %llu", &r, &a, &b, &z, &dt,
-                   &timeout, &filter, &mode, &zmode, &clear, &c, &d) != 12) {
+        if (sscanf(line, "%u %u %u %u %llu %llu %u %u %u %u %llu %llu %u", &r, &a, &b, &z, &dt,
+                   &timeout, &filter, &mode, &zmode, &clear, &c, &d, &arm) != 13) {
             fprintf(stderr, "bad input line %llu: %s", cycle, line);
             return 2;
         }
@@ -128,6 +155,7 @@ int main(int argc, char** argv) {
         top.clear_faults = clear;
         top.ecc_c = c;
         top.ecc_d = d;
+        top.ident_arm = arm;
         top.clock = 0;
         top.eval();
 #if VM_TRACE
@@ -139,7 +167,7 @@ int main(int argc, char** argv) {
         if (tfp) tfp->dump((uint64_t)(cycle * 10 + 10));
 #endif
         printf("%llu %llu %u %u %llu %llu %u %llu %llu %llu %u %llu %llu %llu %u %u %u %u %u %u %u "
-               "%u %u %u %llu %llu %llu %u %llu %llu %u %llu %llu %u %llu %u\n",
+               "%u %u %u %llu %llu %llu %u %llu %llu %u %llu %llu %u %llu %u ",
                (u)top.position, (u)top.z_latch, (unsigned)top.index, (unsigned)top.direction,
                (u)top.nep, (u)top.ndt, (unsigned)top.update, (u)top.speed_n1, (u)top.speed_n2,
                (u)top.speed_n3, (unsigned)top.speed_strobe, (u)top.speed_pc, (u)top.speed_et,
@@ -151,6 +179,7 @@ int main(int argc, char** argv) {
                (unsigned)top.mt_strobe, (u)top.mt_m, (u)top.mt_t, (unsigned)top.mt_negative,
                (u)top.dt_active, (u)top.speed_mtc, (unsigned)top.mtc_strobe,
                (u)top.speed_n3c, (unsigned)top.n3c_strobe);
+        print_ident(top);
         ++cycle;
     }
 #if VM_TRACE
