@@ -57,8 +57,8 @@
 //   output mtc_strobe: one cycle: speed_mtc has just been written
 //   output speed_n3c[40:0]: Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3
 //   output n3c_strobe: one cycle: speed_n3c has just been written
-//   input  ident_arm: one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification; raise it once an index has aligned the position (cfg_z_mode = 1 or 3); clears ident_done
-//   output ident_done: the ident_* results are complete (registered the edge after the closing index); sticky until ident_arm
+//   input  ident_arm: one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and the revolution after it is gathered; ident_done clears when the arm takes effect
+//   output ident_done: the ident_* results are complete: rises 2 edges after the edge that raised the closing index; sticky until the next arm takes effect
 //   output ident_overflow: more than 2^16 lines between the index pulses (contract broken, extra lines dropped)
 //   output ident_count[16:0]: forward lines gathered N (lines per revolution for a clean revolution)
 //   output ident_t_min[31:0]: shortest line period, clock cycles (Zhao's T_min)
@@ -242,11 +242,19 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
     wire  [71:0] gatherer$sum_t;
     wire  [71:0] gatherer$sum_sin;
     wire  [71:0] gatherer$sum_cos;
+    reg  aligned$d;
+    wire  aligned$q;
+    reg  aligned$clock;
+    reg  arm_pending$d;
+    wire  arm_pending$q;
+    reg  arm_pending$clock;
     reg  [1:0] mode_reg$d;
     wire  [1:0] mode_reg$q;
     reg  mode_reg$clock;
     
     // Local signals
+    reg  arm_now;
+    reg  ident_reset;
     reg  [31:0] counts_per_rev;
     reg  [1:0] shift;
     
@@ -357,6 +365,16 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         .sum_sin(gatherer$sum_sin),
         .sum_cos(gatherer$sum_cos)
     );
+    encspeed_ecc$aligned aligned(
+        .d(aligned$d),
+        .q(aligned$q),
+        .clock(aligned$clock)
+    );
+    encspeed_ecc$arm_pending arm_pending(
+        .d(arm_pending$d),
+        .q(arm_pending$q),
+        .clock(arm_pending$clock)
+    );
     encspeed_ecc$mode_reg mode_reg(
         .d(mode_reg$d),
         .q(mode_reg$q),
@@ -371,7 +389,11 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         line_tap$clock = clock;
         gatherer$clock = clock;
         mode_reg$clock = clock;
+        aligned$clock = clock;
+        arm_pending$clock = clock;
         mode_reg$d = mode_reg$q;
+        aligned$d = aligned$q;
+        arm_pending$d = arm_pending$q;
         core$reset = reset;
         core$enc_a = enc_a;
         core$enc_b = enc_b;
@@ -450,13 +472,21 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         n3c_strobe = n3_corrector$valid;
         speed_mtc = corrector$speed_mtc;
         mtc_strobe = corrector$valid;
-        line_tap$reset = reset | (cfg_mode != mode_reg$q);
+        ident_reset = reset | (cfg_mode != mode_reg$q);
+        arm_now = (ident_arm | arm_pending$q) & (aligned$q | core$index);
+        arm_pending$d = (ident_arm | arm_pending$q) & ~arm_now;
+        aligned$d = aligned$q | core$index;
+        if (ident_reset) begin
+            arm_pending$d = 1'b0;
+            aligned$d = 1'b0;
+        end
+        line_tap$reset = ident_reset;
         line_tap$position = core$position;
         line_tap$forward = core$direction;
         line_tap$shift = shift;
         line_tap$counts_per_rev = counts_per_rev;
-        gatherer$reset = reset | (cfg_mode != mode_reg$q);
-        gatherer$arm = ident_arm;
+        gatherer$reset = ident_reset;
+        gatherer$arm = arm_now;
         gatherer$index = core$index;
         gatherer$line = line_tap$line;
         gatherer$position = line_tap$line_position;
@@ -474,6 +504,44 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
     end
     
 endmodule // encspeed_ecc
+
+
+module encspeed_ecc$aligned(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$aligned
+
+
+module encspeed_ecc$arm_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$arm_pending
 
 
 module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count,speed_position,speed_nep,speed_ndt,mt_strobe,mt_m,mt_t,mt_negative,dt_active);

@@ -13,8 +13,12 @@
 //! core's `position` and `direction`, with their line numbers and periods, and feeds an
 //! [`IdentGatherer`] (K = lines, A = [`LINE_BITS`], T = [`PERIOD_BITS`], W = 72) whose
 //! `index` is the core's `index`: a pulse on `ident_arm` gathers the next revolution (index
-//! to index) and raises `ident.done` ([`crate::ident_gatherer`] gives the timing). Arm
-//! once an index has aligned the position (the contract of [`crate::line_tap`]);
+//! to index) and raises `ident.done` ([`crate::ident_gatherer`] gives the timing). The
+//! gatherer needs the position aligned by an index (the contract of [`crate::line_tap`]),
+//! so the top keeps `aligned` (an index since reset or a change of `cfg_mode`) and holds an
+//! arm that comes before it (`arm_pending`) until the aligning index: the gatherer is armed
+//! in that index's cycle and gathers from the next one. `ident_done` clears when the
+//! gatherer is armed.
 //! [`crate::ident_gatherer::identify_from_sums`] turns the sums into e and θ0 in the frame
 //! of the core's position, the frame of `ecc_c`/`ecc_d`. `reset` and a change of
 //! `cfg_mode` reset both.
@@ -93,6 +97,8 @@ pub struct EccTopModel {
     line_tap: LineTap,
     gatherer: IdentGatherer,
     counts_per_rev: [u64; 3],
+    aligned: bool,
+    arm_pending: bool,
     mode_reg: u8,
 }
 
@@ -110,6 +116,8 @@ impl EccTopModel {
             line_tap: LineTap::new(),
             gatherer: IdentGatherer::new(p.lines(), LINE_BITS, PERIOD_BITS),
             counts_per_rev: [0, 1, 2].map(|s| p.counts_per_rev(s)),
+            aligned: false,
+            arm_pending: false,
             mode_reg: 0,
         }
     }
@@ -146,9 +154,17 @@ impl EccTopModel {
         let tap = self
             .line_tap
             .outputs(before.position, before.direction, shift, counts_per_rev);
+        // An arm before the aligning index waits for it (module docs).
+        let arm_now = (inp.ident_arm || self.arm_pending) && (self.aligned || before.index);
+        self.arm_pending = (inp.ident_arm || self.arm_pending) && !arm_now;
+        self.aligned |= before.index;
+        if rst {
+            self.aligned = false;
+            self.arm_pending = false;
+        }
         let ident = self.gatherer.step(GatherInputs {
             reset: rst,
-            arm: inp.ident_arm,
+            arm: arm_now,
             index: before.index,
             line: tap.line,
             position: tap.line_position,
@@ -200,19 +216,19 @@ pub fn disc_inputs(
 }
 
 /// [`EccTopModel`] that raises `ident_arm` for one cycle `delay` cycles after its first
-/// `index` (the contract of [`crate::line_tap`]: the position is aligned from then on), as
-/// the Verilator harness's event mode does.
+/// `index`, as the Verilator harness's event mode does (`None`: never by itself; an
+/// `ident_arm` in the inputs is applied as well).
 #[derive(Clone, Debug)]
 pub struct ArmedModel {
     model: EccTopModel,
-    delay: u64,
+    delay: Option<u64>,
     arm_at: Option<u64>,
     cycle: u64,
 }
 
 impl ArmedModel {
     /// The model of `p` after reset, arming `delay` cycles after the first index.
-    pub fn new(p: &Params, delay: u64) -> Self {
+    pub fn new(p: &Params, delay: Option<u64>) -> Self {
         Self {
             model: EccTopModel::new(p),
             delay,
@@ -221,19 +237,19 @@ impl ArmedModel {
         }
     }
 
-    /// One edge with `inp` (its `ident_arm` replaced); the inputs as applied and the
-    /// outputs.
+    /// One edge with `inp` (its `ident_arm` or-ed with this model's own); the inputs as
+    /// applied and the outputs.
     pub fn step(&mut self, mut inp: EccTopInputs) -> (EccTopInputs, EccTopOutputs) {
-        inp.ident_arm = self.arm_at == Some(self.cycle);
+        inp.ident_arm |= self.arm_at == Some(self.cycle);
         let o = self.model.step(inp);
-        if o.core.index && self.arm_at.is_none() {
-            self.arm_at = Some(self.cycle + 1 + self.delay);
+        if let (true, None, Some(delay)) = (o.core.index, self.arm_at, self.delay) {
+            self.arm_at = Some(self.cycle + 1 + delay);
         }
         self.cycle += 1;
         (inp, o)
     }
 
-    /// The cycle the arm is (or was) raised in, once an index has come.
+    /// The cycle this model's own arm is (or was) raised in, once an index has come.
     pub fn arm_at(&self) -> Option<u64> {
         self.arm_at
     }

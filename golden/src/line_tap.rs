@@ -19,9 +19,10 @@
 //! `last_position` ← position; `since` ← 1 if `line`, else `since` + 1 saturating. `reset`
 //! (synchronous) clears both, so the core's position (0 after its reset) makes no line.
 //!
-//! Contract: arm the gatherer once the position is aligned (after the first `index` since
-//! reset or a change of `cfg_mode`): before that, the period of the first line is
-//! counted from reset or from a step of the unaligned count.
+//! Contract: the gatherer is armed once the position is aligned (after the first `index`
+//! since reset or a change of `cfg_mode`): before that, the period of the first line is
+//! counted from reset or from a step of the unaligned count. `encspeed_ecc` ensures it by
+//! holding an earlier arm until that index ([`crate::ecc_top`]).
 //!
 //! Latency: the line is seen in the cycle after the edge that moved the core's position,
 //! i.e. `edge_to_position` + 1 edges after its A/B edge was sampled; the gatherer registers

@@ -1,7 +1,8 @@
 //! `encspeed_ecc`'s bit-true model on the rigid eccentric disc: the corrected M/T speed of
 //! every window against the plant's constant shaft speed (the position aligned to the disc's
 //! lines by the index, `cfg_z_mode` = 1), and the identification gathered by the same top
-//! (armed at the first index, which aligns the position) against the disc's e and θ0 within the budget of
+//! (armed at the end of reset: the top holds the arm until the index that aligns the
+//! position) against the disc's e and θ0 within the budget of
 //! `golden::ident_gatherer::error_budget`. The Verilog's figures: tb/tests/ecc_top.rs.
 
 use golden::bittrue::CoreInputs;
@@ -44,7 +45,7 @@ fn corrected_mt_on_the_rigid_disc() {
         let edges = disc.edges(&profile);
         let n = (profile.duration() * CLOCK) as u64;
         let sampler = ClockSampler::new(disc.initial_levels(&profile), &edges, CLOCK, n).unwrap();
-        let mut top = ArmedModel::new(&p, 0);
+        let mut top = ArmedModel::new(&p, None);
         let r = rps * f64::from(K) * DT as f64 / CLOCK;
         let (mut before, mut after) = (vec![], vec![]);
         let (mut n3_before, mut n3_after) = (vec![], vec![]);
@@ -64,7 +65,9 @@ fn corrected_mt_on_the_rigid_disc() {
                 },
                 ecc_c: c,
                 ecc_d: d,
-                ident_arm: false,
+                // Armed at the end of reset, before any index: the top holds the arm
+                // until the index that aligns the position.
+                ident_arm: k == 3,
             });
             if o.ident.done && !ident.done {
                 done_at = Some(k as u64 - last_index);

@@ -17,7 +17,8 @@
 //! E·cos θ0, d = E·sin θ0, two's complement Q15.16 lines, sampled with each window),
 //! `speed_mtc[S-1:0]` (format of `speed_mt`) and `mtc_strobe`, `speed_n3c[S-1:0]` (format
 //! of `speed_n3`) and `n3c_strobe`; `ident_arm` and the gatherer's results `ident_*`
-//! (docs/ports.md).
+//! (docs/ports.md). An `ident_arm` before the first index since reset (or a change of
+//! `cfg_mode`) is held until that index (`aligned`, `arm_pending`), as the model says.
 
 use crate::core::EncspeedCore;
 use crate::ident_gatherer::IdentGatherer;
@@ -166,6 +167,10 @@ pub struct EncspeedEcc<const N: usize, const P: usize, const S: usize, const CW:
     n3_corrector: N3Corrector<N, S>,
     line_tap: LineTap<C>,
     gatherer: IdentGatherer<LB, TB, WB>,
+    aligned: DFF<Bit>,
+    arm_pending: DFF<Bit>,
+    arm_now: Signal<Local, Bit>,
+    ident_reset: Signal<Local, Bit>,
     mode_reg: DFF<Bits<2>>,
     counts_per_rev: Signal<Local, Bits<C>>,
     shift: Signal<Local, Bits<2>>,
@@ -253,6 +258,10 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EncspeedEc
             n3_corrector: N3Corrector::new(p.lines()),
             line_tap: LineTap::default(),
             gatherer: IdentGatherer::new(p.lines()),
+            aligned: Default::default(),
+            arm_pending: Default::default(),
+            arm_now: Default::default(),
+            ident_reset: Default::default(),
             mode_reg: Default::default(),
             counts_per_rev: Default::default(),
             shift: Default::default(),
@@ -282,7 +291,7 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
             line_tap,
             gatherer
         );
-        dff_setup!(self, clock, mode_reg);
+        dff_setup!(self, clock, mode_reg, aligned, arm_pending);
         self.core.reset.next = self.reset.val();
         self.core.enc_a.next = self.enc_a.val();
         self.core.enc_b.next = self.enc_b.val();
@@ -364,16 +373,26 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         self.n3c_strobe.next = self.n3_corrector.valid.val();
         self.speed_mtc.next = self.corrector.speed_mtc.val();
         self.mtc_strobe.next = self.corrector.valid.val();
-        // Identification: the core's line edges, gathered index to index after an arm.
-        self.line_tap.reset.next =
-            self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
+        // Identification: the core's line edges, gathered index to index after an arm. The
+        // gatherer needs the position aligned by an index: an arm before the aligning index
+        // waits for it (golden::ecc_top).
+        self.ident_reset.next = self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
+        self.arm_now.next = (self.ident_arm.val() | self.arm_pending.q.val())
+            & (self.aligned.q.val() | self.core.index.val());
+        self.arm_pending.d.next =
+            (self.ident_arm.val() | self.arm_pending.q.val()) & !self.arm_now.val();
+        self.aligned.d.next = self.aligned.q.val() | self.core.index.val();
+        if self.ident_reset.val() {
+            self.arm_pending.d.next = false;
+            self.aligned.d.next = false;
+        }
+        self.line_tap.reset.next = self.ident_reset.val();
         self.line_tap.position.next = self.core.position.val();
         self.line_tap.forward.next = self.core.direction.val();
         self.line_tap.shift.next = self.shift.val();
         self.line_tap.counts_per_rev.next = self.counts_per_rev.val();
-        self.gatherer.reset.next =
-            self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
-        self.gatherer.arm.next = self.ident_arm.val();
+        self.gatherer.reset.next = self.ident_reset.val();
+        self.gatherer.arm.next = self.arm_now.val();
         self.gatherer.index.next = self.core.index.val();
         self.gatherer.line.next = self.line_tap.line.val();
         self.gatherer.position.next = self.line_tap.line_position.val();

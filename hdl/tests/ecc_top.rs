@@ -2,7 +2,7 @@
 //! cycle, on an eccentric disc driven forward, backward and through reversals, in x1, x2
 //! and x4, with random coefficients and dt short enough that windows queue in the
 //! corrector (the latest wins), with the identification armed at a random cycle after the
-//! first index: on a
+//! first index or early, before it (the top holds the arm until the aligning index): on a
 //! forward run long enough for the armed revolution, the gathered count is K and Σ T the
 //! revolution's length in cycles to ±1 (worked from the speed, not by the code).
 
@@ -43,6 +43,7 @@ proptest! {
         coef in (-(1i64 << 31)..(1i64 << 31), -(1i64 << 31)..(1i64 << 31)),
         realistic in any::<bool>(),
         arm_delay in 0u64..3_000,
+        early_arm in prop::option::of(3u64..200),
     ) {
         let p = params(lines);
         let disc = EccentricDisc::new(lines, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
@@ -66,12 +67,18 @@ proptest! {
             ecc_d: d,
             ident_arm: false,
         };
-        let mut model = ArmedModel::new(&p, arm_delay);
+        // Armed early (before the aligning index, which the top waits for) or after the first
+        // index.
+        let mut model = ArmedModel::new(&p, early_arm.is_none().then_some(arm_delay));
+        let early = |k: usize, mut i: EccTopInputs| {
+            i.ident_arm = early_arm == Some(k as u64);
+            i
+        };
         let mut sim = build_ecc(&p).unwrap();
         let (mut strobes, mut n3_strobes) = (0, 0);
         let mut ident = Default::default();
         for (k, i) in disc_inputs(initial, &changes, cycles, config).enumerate() {
-            let (i, want) = model.step(i);
+            let (i, want) = model.step(early(k, i));
             let got = sim.step(&i);
             prop_assert_eq!(got, want, "cycle {}", k);
             ident = want.ident;
@@ -79,11 +86,13 @@ proptest! {
             n3_strobes += usize::from(want.n3c_strobe);
         }
         prop_assert!(strobes > 0 && n3_strobes > 0, "no corrected speed in {} cycles", cycles);
-        // The armed revolution: from the first index after the arm to the next one, within
-        // two revolutions of the arm.
+        // The armed revolution: from the first index after the arm (after the aligning one
+        // for an early arm) to the next one, within two (three) revolutions of the arm.
         let rev_cycles = CLOCK / rps;
-        let armed_for = model.arm_at().map_or(0.0, |a| (cycles - a) as f64);
-        if !reverse && armed_for > 2.0 * rev_cycles + 100.0 {
+        let armed_at = early_arm.or(model.arm_at());
+        let armed_for = armed_at.map_or(0.0, |a| (cycles - a) as f64);
+        let revs_needed = if early_arm.is_some() { 3.0 } else { 2.0 };
+        if !reverse && armed_for > revs_needed * rev_cycles + 100.0 {
             prop_assert_eq!(check_revolution(&ident, lines, rev_cycles), Ok(()));
         }
     }

@@ -60,6 +60,7 @@ proptest! {
         coef in (-(1i64 << 31)..(1i64 << 31), -(1i64 << 31)..(1i64 << 31)),
         realistic in any::<bool>(),
         arm_delay in 0u64..3_000,
+        early_arm in prop::option::of(3u64..200),
     ) {
         let p = small(lines);
         let disc = EccentricDisc::new(lines, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
@@ -79,10 +80,19 @@ proptest! {
             ecc_d: d,
             ident_arm: false,
         };
-        // The model first: it decides the arm's cycle (after its first index).
-        let mut model = ArmedModel::new(&p, arm_delay);
+        // The model first: it decides the arm's cycle.
+        // Armed early (before the aligning index, which the top waits for) or after the first
+        // index.
+        let mut model = ArmedModel::new(&p, early_arm.is_none().then_some(arm_delay));
+        let early = |k: usize, mut i: EccTopInputs| {
+            i.ident_arm = early_arm == Some(k as u64);
+            i
+        };
         let (inputs, wanted): (Vec<_>, Vec<_>) =
-            disc_inputs(initial, &changes, cycles, config).map(|i| model.step(i)).unzip();
+            disc_inputs(initial, &changes, cycles, config)
+                .enumerate()
+                .map(|(k, i)| model.step(early(k, i)))
+                .unzip();
         let got = verilated(&p).run(&inputs, None).unwrap();
         let (mut strobes, mut n3_strobes) = (0, 0);
         for (k, (g, want)) in got.iter().zip(&wanted).enumerate() {
@@ -93,8 +103,10 @@ proptest! {
         prop_assert!(strobes > 0 && n3_strobes > 0);
         // A forward run armed for more than two revolutions has gathered one.
         let rev_cycles = 1e6 / rps;
-        let armed_for = model.arm_at().map_or(0.0, |a| (cycles - a) as f64);
-        if !reverse && armed_for > 2.0 * rev_cycles + 100.0 {
+        let armed_at = early_arm.or(model.arm_at());
+        let armed_for = armed_at.map_or(0.0, |a| (cycles - a) as f64);
+        let revs_needed = if early_arm.is_some() { 3.0 } else { 2.0 };
+        if !reverse && armed_for > revs_needed * rev_cycles + 100.0 {
             prop_assert_eq!(check_revolution(&wanted[wanted.len() - 1].ident, lines, rev_cycles), Ok(()));
         }
     }
@@ -119,7 +131,7 @@ fn model_log(p: &Params, setup: &RippleSetup, stim: &Stimulus) -> ModelLog {
         ecc_d: d,
         ident_arm: false,
     };
-    let mut model = ArmedModel::new(p, 0);
+    let mut model = ArmedModel::new(p, Some(0));
     let mut log = ModelLog {
         strobes: Vec::new(),
         ident: Vec::new(),
