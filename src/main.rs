@@ -24,9 +24,10 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Cmd {
-    /// Emit encspeed_core.v and its manifest encspeed_core.toml, encspeed_ecc.v (the core
-    /// with the eccentricity-corrected speeds; for a multiple of 4 lines), encspeed_wb.v and
-    /// encspeed_regs.h.
+    /// Emit encspeed_core.v and its manifest encspeed_core.toml, encspeed_wb.v and
+    /// encspeed_regs.h; for a multiple of 4 lines also encspeed_ecc.v (the core with the
+    /// eccentricity-corrected speeds and identification), encspeed_ecc_wb.v (that behind
+    /// Wishbone) and encspeed_ecc_regs.h.
     Generate {
         #[command(flatten)]
         spec: SpecArgs,
@@ -636,10 +637,17 @@ fn generate(p: &Params, out: &Path) -> Outcome {
     let ecc = match hdl::emit_ecc(p) {
         Ok(v) => {
             write("encspeed_ecc.v", &v)?;
-            format!(", {}", out.join("encspeed_ecc.v").display())
+            for (name, text) in hdl::emit_wb::emit_ecc_wb(p).map_err(|e| (2, e))? {
+                write(name, &text)?;
+            }
+            format!(
+                ", {}, {}",
+                out.join("encspeed_ecc.v").display(),
+                out.join(hdl::emit_wb::ECC_WB_VERILOG_FILE).display()
+            )
         }
         Err(e) => {
-            eprintln!("encspeed_ecc.v not written: {e}");
+            eprintln!("encspeed_ecc.v and encspeed_ecc_wb.v not written: {e}");
             String::new()
         }
     };

@@ -33,6 +33,8 @@ fn generate_with_defaults_reproduces_generated_dir() {
         "encspeed_ecc.v",
         "encspeed_wb.v",
         "encspeed_regs.h",
+        "encspeed_ecc_wb.v",
+        "encspeed_ecc_regs.h",
     ] {
         let shipped = std::fs::read(
             Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -57,9 +59,11 @@ fn generate_for_lines_not_a_multiple_of_4_writes_the_core_and_says_why_not_the_e
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(out.join("encspeed_core.v").exists());
     assert!(!out.join("encspeed_ecc.v").exists());
+    assert!(!out.join("encspeed_ecc_wb.v").exists());
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
-        err.contains("encspeed_ecc.v not written") && err.contains("multiple of 4"),
+        err.contains("encspeed_ecc.v and encspeed_ecc_wb.v not written")
+            && err.contains("multiple of 4"),
         "{err}"
     );
 }

@@ -79,6 +79,7 @@ macro_rules! layout {
         pub const LAYOUT: &[(&str, u32)] = &[$((stringify!($name), $off)),*];
     };
 }
+pub(crate) use layout;
 
 layout! {
     /// Constant magic [`ID_MAGIC`].
@@ -176,6 +177,9 @@ pub enum Access {
     /// Read, write 1 to clear: a written 1 clears the bit (or, for the fault bits, pulses
     /// `clear_faults`); a written 0 does nothing.
     W1c,
+    /// Write 1 to pulse: a written 1 raises a one-cycle output in the cycle after the write
+    /// edge; a written 0 does nothing; reads 0.
+    W1p,
 }
 
 impl Access {
@@ -185,6 +189,7 @@ impl Access {
             Access::Ro => "RO",
             Access::Rw => "RW",
             Access::W1c => "W1C",
+            Access::W1p => "W1P",
         }
     }
 }
@@ -245,7 +250,7 @@ impl Register {
     /// "RO", "RW", "W1C", or e.g. "RO/W1C" when the fields differ.
     pub fn access(&self) -> String {
         let mut kinds: Vec<&str> = Vec::new();
-        for a in [Access::Ro, Access::Rw, Access::W1c] {
+        for a in [Access::Ro, Access::Rw, Access::W1c, Access::W1p] {
             if self.fields.iter().any(|f| f.access == a) {
                 kinds.push(a.as_str());
             }
@@ -363,7 +368,7 @@ pub struct RegMap {
     registers: Vec<Register>,
 }
 
-fn field(name: &'static str, lsb: u32, width: u32, access: Access, d: &str) -> Field {
+pub(crate) fn field(name: &'static str, lsb: u32, width: u32, access: Access, d: &str) -> Field {
     Field {
         name,
         lsb,
@@ -777,7 +782,7 @@ fn param_lines(mp: &MapParams) -> Vec<String> {
 }
 
 /// `#define name value`, with a comment if given.
-fn c_define(h: &mut String, name: &str, value: &str, comment: Option<&str>) {
+pub(crate) fn c_define(h: &mut String, name: &str, value: &str, comment: Option<&str>) {
     let _ = match comment {
         Some(c) => writeln!(h, "#define {name:<44} {value} /* {} */", c_text(c)),
         None => writeln!(h, "#define {name:<44} {value}"),
@@ -787,6 +792,78 @@ fn c_define(h: &mut String, name: &str, value: &str, comment: Option<&str>) {
 /// A C comment body: no "*/" and no line breaks.
 fn c_text(s: &str) -> String {
     s.replace("*/", "* /").replace('\n', " ")
+}
+
+/// `#define`s of `registers`: `ENCSPEED_<REG>_OFFSET`, `_RESET` (registers the file holds),
+/// `ENCSPEED_<REG>_<FIELD>_SHIFT`, `_WIDTH`, `_MASK`, each register under a comment.
+pub(crate) fn c_registers(h: &mut String, registers: &[Register]) {
+    for r in registers {
+        let mut head = format!("{} ({}): {}", r.name, r.access(), r.description);
+        if let Some(e) = &r.side_effect {
+            head += &format!("; {e}");
+        }
+        let _ = writeln!(h, "\n/* {} */", c_text(&head));
+        let p = format!("ENCSPEED_{}", r.name);
+        c_define(
+            h,
+            &format!("{p}_OFFSET"),
+            &format!("0x{:02X}u", r.offset),
+            None,
+        );
+        if let Some(v) = r.reset {
+            c_define(h, &format!("{p}_RESET"), &format!("0x{v:08X}u"), None);
+        }
+        for f in &r.fields {
+            let q = format!("{p}_{}", f.name);
+            let d = format!("[{}] {}: {}", f.bits(), f.access.as_str(), f.description);
+            c_define(h, &format!("{q}_SHIFT"), &format!("{}u", f.lsb), Some(&d));
+            c_define(h, &format!("{q}_WIDTH"), &format!("{}u", f.width), None);
+            c_define(
+                h,
+                &format!("{q}_MASK"),
+                &format!("0x{:08X}u", f.mask()),
+                None,
+            );
+        }
+    }
+}
+
+/// The summary table of `registers`, then one field table per register, in Markdown.
+pub(crate) fn markdown_registers(m: &mut String, registers: &[Register]) {
+    *m += "| offset | register | access | reset | description |\n";
+    *m += "|---|---|---|---|---|\n";
+    for r in registers {
+        let reset = match r.reset {
+            Some(v) => format!("0x{v:08X}"),
+            None => "live".to_string(),
+        };
+        let mut d = r.description.clone();
+        if let Some(e) = &r.side_effect {
+            d += &format!("; {e}");
+        }
+        let _ = writeln!(
+            m,
+            "| 0x{:02X} | {} | {} | {reset} | {} |",
+            r.offset,
+            r.name,
+            r.access(),
+            d.replace('|', "\\|")
+        );
+    }
+    for r in registers {
+        let _ = writeln!(m, "\n## {} (0x{:02X})\n", r.name, r.offset);
+        *m += "| bits | field | access | description |\n|---|---|---|---|\n";
+        for f in &r.fields {
+            let _ = writeln!(
+                m,
+                "| {} | {} | {} | {} |",
+                f.bits(),
+                f.name,
+                f.access.as_str(),
+                f.description.replace('|', "\\|")
+            );
+        }
+    }
 }
 
 impl RegMap {
@@ -849,45 +926,7 @@ impl RegMap {
         for (name, value, comment) in params {
             c_define(&mut h, &format!("ENCSPEED_{name}"), &value, Some(comment));
         }
-        for r in &self.registers {
-            let mut head = format!("{} ({}): {}", r.name, r.access(), r.description);
-            if let Some(e) = &r.side_effect {
-                head += &format!("; {e}");
-            }
-            let _ = writeln!(h, "\n/* {} */", c_text(&head));
-            let p = format!("ENCSPEED_{}", r.name);
-            c_define(
-                &mut h,
-                &format!("{p}_OFFSET"),
-                &format!("0x{:02X}u", r.offset),
-                None,
-            );
-            if let Some(v) = r.reset {
-                c_define(&mut h, &format!("{p}_RESET"), &format!("0x{v:08X}u"), None);
-            }
-            for f in &r.fields {
-                let q = format!("{p}_{}", f.name);
-                let d = format!("[{}] {}: {}", f.bits(), f.access.as_str(), f.description);
-                c_define(
-                    &mut h,
-                    &format!("{q}_SHIFT"),
-                    &format!("{}u", f.lsb),
-                    Some(&d),
-                );
-                c_define(
-                    &mut h,
-                    &format!("{q}_WIDTH"),
-                    &format!("{}u", f.width),
-                    None,
-                );
-                c_define(
-                    &mut h,
-                    &format!("{q}_MASK"),
-                    &format!("0x{:08X}u", f.mask()),
-                    None,
-                );
-            }
-        }
+        c_registers(&mut h, &self.registers);
         h += "\n#endif /* ENCSPEED_REGS_H */\n";
         h
     }
@@ -910,40 +949,7 @@ impl RegMap {
               are ignored. Reserved bits read 0. Read a speed's LO register before its HI \
               register: the LO read latches HI. Writing 1 to any STATUS FAULT_* bit clears \
               all three fault flags.\n\n";
-        m += "| offset | register | access | reset | description |\n";
-        m += "|---|---|---|---|---|\n";
-        for r in &self.registers {
-            let reset = match r.reset {
-                Some(v) => format!("0x{v:08X}"),
-                None => "live".to_string(),
-            };
-            let mut d = r.description.clone();
-            if let Some(e) = &r.side_effect {
-                d += &format!("; {e}");
-            }
-            let _ = writeln!(
-                m,
-                "| 0x{:02X} | {} | {} | {reset} | {} |",
-                r.offset,
-                r.name,
-                r.access(),
-                d.replace('|', "\\|")
-            );
-        }
-        for r in &self.registers {
-            let _ = writeln!(m, "\n## {} (0x{:02X})\n", r.name, r.offset);
-            m += "| bits | field | access | description |\n|---|---|---|---|\n";
-            for f in &r.fields {
-                let _ = writeln!(
-                    m,
-                    "| {} | {} | {} | {} |",
-                    f.bits(),
-                    f.name,
-                    f.access.as_str(),
-                    f.description.replace('|', "\\|")
-                );
-            }
-        }
+        markdown_registers(&mut m, &self.registers);
         m
     }
 }

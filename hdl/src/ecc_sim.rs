@@ -1,7 +1,6 @@
 //! The rust-hdl `encspeed_ecc` ([`crate::EncspeedEcc`]) driven cycle by cycle, in the form
 //! of [`golden::ecc_top::EccTopModel::step`], for any counter width.
 
-use crate::ecc_mt_speed::corrected_width;
 use crate::ecc_top::EncspeedEcc;
 use crate::sim::{core_outputs, signed};
 use golden::ecc_top::{EccTopInputs, EccTopOutputs, IDENT_SUM_BITS};
@@ -110,35 +109,37 @@ fn driven<const N: usize, const P: usize, const S: usize, const CW: usize>(
 macro_rules! ecc_width {
     ($bits:expr, $f:ident, $arg:expr) => {
         match $bits {
-            8 => $f::<8, 17, 25, { corrected_width(8) }>($arg),
-            9 => $f::<9, 19, 26, { corrected_width(9) }>($arg),
-            10 => $f::<10, 21, 27, { corrected_width(10) }>($arg),
-            11 => $f::<11, 23, 28, { corrected_width(11) }>($arg),
-            12 => $f::<12, 25, 29, { corrected_width(12) }>($arg),
-            13 => $f::<13, 27, 30, { corrected_width(13) }>($arg),
-            14 => $f::<14, 29, 31, { corrected_width(14) }>($arg),
-            15 => $f::<15, 31, 32, { corrected_width(15) }>($arg),
-            16 => $f::<16, 33, 33, { corrected_width(16) }>($arg),
-            17 => $f::<17, 35, 34, { corrected_width(17) }>($arg),
-            18 => $f::<18, 37, 35, { corrected_width(18) }>($arg),
-            19 => $f::<19, 39, 36, { corrected_width(19) }>($arg),
-            20 => $f::<20, 41, 37, { corrected_width(20) }>($arg),
-            21 => $f::<21, 43, 38, { corrected_width(21) }>($arg),
-            22 => $f::<22, 45, 39, { corrected_width(22) }>($arg),
-            23 => $f::<23, 47, 40, { corrected_width(23) }>($arg),
-            24 => $f::<24, 49, 41, { corrected_width(24) }>($arg),
-            25 => $f::<25, 51, 42, { corrected_width(25) }>($arg),
-            26 => $f::<26, 53, 43, { corrected_width(26) }>($arg),
-            27 => $f::<27, 55, 44, { corrected_width(27) }>($arg),
-            28 => $f::<28, 57, 45, { corrected_width(28) }>($arg),
-            29 => $f::<29, 59, 46, { corrected_width(29) }>($arg),
-            30 => $f::<30, 61, 47, { corrected_width(30) }>($arg),
-            31 => $f::<31, 63, 48, { corrected_width(31) }>($arg),
-            32 => $f::<32, 65, 49, { corrected_width(32) }>($arg),
+            8 => $f::<8, 17, 25, { $crate::ecc_mt_speed::corrected_width(8) }>($arg),
+            9 => $f::<9, 19, 26, { $crate::ecc_mt_speed::corrected_width(9) }>($arg),
+            10 => $f::<10, 21, 27, { $crate::ecc_mt_speed::corrected_width(10) }>($arg),
+            11 => $f::<11, 23, 28, { $crate::ecc_mt_speed::corrected_width(11) }>($arg),
+            12 => $f::<12, 25, 29, { $crate::ecc_mt_speed::corrected_width(12) }>($arg),
+            13 => $f::<13, 27, 30, { $crate::ecc_mt_speed::corrected_width(13) }>($arg),
+            14 => $f::<14, 29, 31, { $crate::ecc_mt_speed::corrected_width(14) }>($arg),
+            15 => $f::<15, 31, 32, { $crate::ecc_mt_speed::corrected_width(15) }>($arg),
+            16 => $f::<16, 33, 33, { $crate::ecc_mt_speed::corrected_width(16) }>($arg),
+            17 => $f::<17, 35, 34, { $crate::ecc_mt_speed::corrected_width(17) }>($arg),
+            18 => $f::<18, 37, 35, { $crate::ecc_mt_speed::corrected_width(18) }>($arg),
+            19 => $f::<19, 39, 36, { $crate::ecc_mt_speed::corrected_width(19) }>($arg),
+            20 => $f::<20, 41, 37, { $crate::ecc_mt_speed::corrected_width(20) }>($arg),
+            21 => $f::<21, 43, 38, { $crate::ecc_mt_speed::corrected_width(21) }>($arg),
+            22 => $f::<22, 45, 39, { $crate::ecc_mt_speed::corrected_width(22) }>($arg),
+            23 => $f::<23, 47, 40, { $crate::ecc_mt_speed::corrected_width(23) }>($arg),
+            24 => $f::<24, 49, 41, { $crate::ecc_mt_speed::corrected_width(24) }>($arg),
+            25 => $f::<25, 51, 42, { $crate::ecc_mt_speed::corrected_width(25) }>($arg),
+            26 => $f::<26, 53, 43, { $crate::ecc_mt_speed::corrected_width(26) }>($arg),
+            27 => $f::<27, 55, 44, { $crate::ecc_mt_speed::corrected_width(27) }>($arg),
+            28 => $f::<28, 57, 45, { $crate::ecc_mt_speed::corrected_width(28) }>($arg),
+            29 => $f::<29, 59, 46, { $crate::ecc_mt_speed::corrected_width(29) }>($arg),
+            30 => $f::<30, 61, 47, { $crate::ecc_mt_speed::corrected_width(30) }>($arg),
+            31 => $f::<31, 63, 48, { $crate::ecc_mt_speed::corrected_width(31) }>($arg),
+            32 => $f::<32, 65, 49, { $crate::ecc_mt_speed::corrected_width(32) }>($arg),
             other => unreachable!("counter width {other} passed validation"),
         }
     };
 }
+
+pub(crate) use ecc_width;
 
 /// The rust-hdl `encspeed_ecc` for `p`, ready to step; an error where
 /// [`golden::ecc_top::check`] refuses `p`.

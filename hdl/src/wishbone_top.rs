@@ -220,22 +220,28 @@ impl<const N: usize, const P: usize, const S: usize> WbSim for Driven<N, P, S> {
     }
 
     fn regs_outputs(&self) -> WbRegsOutputs {
-        let r = &self.uut.regs;
-        WbRegsOutputs {
-            wb_ack_o: r.wb_ack_o.val(),
-            wb_dat_o: r.wb_dat_o.val().to_u64() as u32,
-            irq: r.irq.val(),
-            cfg_dt: r.cfg_dt.val().to_u64(),
-            cfg_timeout: r.cfg_timeout.val().to_u64(),
-            cfg_filter: r.cfg_filter.val().to_u64(),
-            cfg_mode: r.cfg_mode.val().to_u64() as u8,
-            cfg_z_mode: r.cfg_z_mode.val().to_u64() as u8,
-            clear_faults: r.clear_faults.val(),
-        }
+        regs_outputs(&self.uut.regs)
     }
 
     fn verilog(&self, module_name: &str) -> String {
         crate::emit::named_verilog(&self.uut, module_name)
+    }
+}
+
+/// The outputs of a simulated register file after the last edge.
+pub(crate) fn regs_outputs<const N: usize, const S: usize>(
+    r: &WbRegs<N, S, C, FB, G>,
+) -> WbRegsOutputs {
+    WbRegsOutputs {
+        wb_ack_o: r.wb_ack_o.val(),
+        wb_dat_o: r.wb_dat_o.val().to_u64() as u32,
+        irq: r.irq.val(),
+        cfg_dt: r.cfg_dt.val().to_u64(),
+        cfg_timeout: r.cfg_timeout.val().to_u64(),
+        cfg_filter: r.cfg_filter.val().to_u64(),
+        cfg_mode: r.cfg_mode.val().to_u64() as u8,
+        cfg_z_mode: r.cfg_z_mode.val().to_u64() as u8,
+        clear_faults: r.clear_faults.val(),
     }
 }
 

@@ -21,11 +21,17 @@ const MODULE: &str = "encspeed_ecc";
 /// rust-hdl's `bit_cast` emits (`x & 33'h1ffffffff` to widen, `(y & 32'hffffffff)` assigned
 /// to narrow: Verilog zero-extends and truncates exactly as the cast means).
 pub fn waivers() -> String {
+    waivers_for(MODULE)
+}
+
+/// The waivers of [`waivers`] for a top `module` that contains `encspeed_ecc` (as
+/// `encspeed_ecc_wb` does), retargeted to `module.v`.
+pub fn waivers_for(module: &str) -> String {
     format!(
-        "{}\nlint_off -rule DECLFILENAME -file \"*{MODULE}.v\"\n\
-         lint_off -rule WIDTH -file \"*{MODULE}.v\" -match \"*Operator AND expects*\"\n\
-         lint_off -rule WIDTH -file \"*{MODULE}.v\" -match \"*Assign RHS's AND generates*\"\n",
-        crate::verilator::WAIVERS.replace("*encspeed_core.v", &format!("*{MODULE}.v"))
+        "{}\nlint_off -rule DECLFILENAME -file \"*{module}.v\"\n\
+         lint_off -rule WIDTH -file \"*{module}.v\" -match \"*Operator AND expects*\"\n\
+         lint_off -rule WIDTH -file \"*{module}.v\" -match \"*Assign RHS's AND generates*\"\n",
+        crate::verilator::WAIVERS.replace("*encspeed_core.v", &format!("*{module}.v"))
     )
 }
 

@@ -5,6 +5,7 @@
 //! cycle). A missing `verilator` is an error, never a skip: `.ci/run` installs it.
 
 use crate::stream_harness;
+use golden::ecc_wb_top::ECC_WB_TOP_MODULE;
 use golden::wb_top::{WbTopInputs, WbTopOutputs, TOP_MODULE};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -12,6 +13,8 @@ use std::process::Command;
 const HARNESS: &str = include_str!("../verilator/wb_harness.cpp");
 /// The top's own lint waivers (each one explained in the file).
 pub const WB_WAIVERS: &str = include_str!("../verilator/wb_waivers.vlt");
+/// `encspeed_ecc_wb`'s own lint waivers (each one explained in the file).
+pub const ECC_WB_WAIVERS: &str = include_str!("../verilator/ecc_wb_waivers.vlt");
 
 /// The waivers that apply to `encspeed_wb.v`: the core's ([`crate::verilator::WAIVERS`]),
 /// retargeted from `encspeed_core.v` to this file (the top contains the core unchanged, so
@@ -34,21 +37,39 @@ pub fn stage(dir: &Path, verilog: &str) -> std::io::Result<(PathBuf, PathBuf)> {
 /// `verilator --lint-only -Wall` on `encspeed_wb.v` with the documented waivers; Ok on a
 /// clean lint (a warning fails the run).
 pub fn lint(verilog: &str) -> Result<String, String> {
+    lint_top(verilog, TOP_MODULE, &waivers())
+}
+
+/// `verilator --lint-only -Wall` on `verilog`, top module `module`, with `waivers`; Ok on a
+/// clean lint (a warning fails the run).
+pub fn lint_top(verilog: &str, module: &str, waivers: &str) -> Result<String, String> {
     let dir = crate::target_dir().join("verilator").join(format!(
-        "wb-lint-{:016x}",
-        stream_harness::fnv1a(&[verilog, &waivers()])
+        "{module}-lint-{:016x}",
+        stream_harness::fnv1a(&[verilog, waivers])
     ));
-    let (v, w) = stage(&dir, verilog).map_err(|e| e.to_string())?;
+    let v = format!("{module}.v");
+    let paths = stream_harness::stage(&dir, &[(&v, verilog), ("waivers.vlt", waivers)])
+        .map_err(|e| e.to_string())?;
     crate::run_tool(
         Command::new("verilator")
-            .args(["--lint-only", "-Wall", "--top-module", TOP_MODULE])
-            .arg(&w)
-            .arg(&v),
+            .args(["--lint-only", "-Wall", "--top-module", module])
+            .arg(&paths[1])
+            .arg(&paths[0]),
         "verilator --lint-only",
     )
 }
 
-/// A compiled simulator of one emitted `encspeed_wb`.
+/// The waivers of `encspeed_ecc_wb.v`: `encspeed_ecc`'s
+/// ([`crate::ecc_verilator::waivers_for`]) and the top's own (`ecc_wb_waivers.vlt`).
+pub fn ecc_wb_waivers() -> String {
+    format!(
+        "{}\n// ---- encspeed_ecc_wb's own (ecc_wb_waivers.vlt) ----\n{}",
+        crate::ecc_verilator::waivers_for(ECC_WB_TOP_MODULE),
+        ECC_WB_WAIVERS.trim_start_matches("`verilator_config")
+    )
+}
+
+/// A compiled simulator of one emitted `encspeed_wb` (or of a top with its ports).
 pub struct VerilatedWb {
     exe: PathBuf,
 }
@@ -56,17 +77,24 @@ pub struct VerilatedWb {
 impl VerilatedWb {
     /// Compile `verilog` (top module `encspeed_wb`) with the harness, or reuse the build.
     pub fn build(verilog: &str) -> Result<VerilatedWb, String> {
-        if !verilog.contains(&format!("module {TOP_MODULE}(")) {
-            return Err(format!("the Verilog has no module {TOP_MODULE}"));
+        VerilatedWb::build_top(verilog, TOP_MODULE, &waivers())
+    }
+
+    /// Compile `verilog` whose top module `module` has the ports of `encspeed_wb` (as
+    /// `encspeed_ecc_wb` has) with the harness and the lint `waivers`, or reuse the build.
+    pub fn build_top(verilog: &str, module: &str, waivers: &str) -> Result<VerilatedWb, String> {
+        if !verilog.contains(&format!("module {module}(")) {
+            return Err(format!("the Verilog has no module {module}"));
         }
-        let v = format!("{TOP_MODULE}.v");
+        let v = format!("{module}.v");
+        let harness = HARNESS.replace("Vencspeed_wb", &format!("V{module}"));
         let exe = stream_harness::build_cached(
-            "wb-",
-            TOP_MODULE,
+            &format!("{module}-"),
+            module,
             &[
-                ("wb_waivers.vlt", &waivers()),
+                ("wb_waivers.vlt", waivers),
                 (&v, verilog),
-                ("wb_harness.cpp", HARNESS),
+                ("wb_harness.cpp", &harness),
             ],
         )?;
         Ok(VerilatedWb { exe })
