@@ -20,8 +20,8 @@
 
 use crate::ecc_regmap::{self, ECC_SPEEDS, IDENT_SUMS};
 use crate::ident_gatherer::GatherOutputs;
-use crate::regmap::{Access, Register, SPAN_BYTES};
-use crate::wb_regs::{lane_mask, sign_extend, WbBus};
+use crate::regmap::{Access, Register};
+use crate::wb_regs::{sign_extend, Request, WbBus};
 
 /// What `encspeed_ecc` gives the window, named as its ports: the speeds as S-bit two's
 /// complement bit patterns.
@@ -211,27 +211,26 @@ impl EccRegsModel {
         let st = &inp.status;
         let b = &inp.bus;
         self.check(st);
-        assert!(b.wb_adr_i < SPAN_BYTES, "wb_adr_i = {:#x}", b.wb_adr_i);
-        assert!(b.wb_sel_i < 16, "wb_sel_i = {:#x}", b.wb_sel_i);
+        let Request {
+            off,
+            rd,
+            wr,
+            lanes,
+            ones,
+        } = Request::decode(b, self.s.ack);
         if inp.reset {
             self.s = State::default();
             return self.outputs();
         }
         let s = self.s;
         let mut n = s;
-        let off = b.wb_adr_i & !3;
-        let req = b.wb_cyc_i && b.wb_stb_i && !s.ack;
-        let rd = req && !b.wb_we_i;
-        let wr = req && b.wb_we_i;
-        n.ack = req;
+        n.ack = rd || wr;
         n.dat = if rd { self.read(off, st) } else { 0 };
         if rd {
             if let Some(k) = ECC_SPEEDS.iter().position(|e| e.0 == off) {
                 n.hi[k] = (sign_extend(st.speeds()[k], self.speed_bits) >> 32) as u32;
             }
         }
-        let lanes = lane_mask(b.wb_sel_i);
-        let ones = b.wb_dat_i & lanes;
         let rw = |off: u32, old: u32| ((old & !lanes) | ones) & self.mask(off, Access::Rw);
         let pulse = |name: &str| wr && off == m::ECC_CTRL && ones & self.field(off, name) != 0;
         n.arm = pulse("IDENT_ARM");

@@ -153,6 +153,40 @@ pub fn lane_mask(sel: u8) -> u32 {
         .fold(0, |m, j| m | (0xFF << (8 * j)))
 }
 
+/// A bus access as a classic slave decodes it at an edge: a request is
+/// `wb_cyc_i & wb_stb_i` while its `wb_ack_o` is low.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Request {
+    /// Word offset (`wb_adr_i` with bits 1:0 cleared).
+    pub off: u32,
+    /// A read request.
+    pub rd: bool,
+    /// A write request.
+    pub wr: bool,
+    /// The written byte lanes as a 32-bit mask.
+    pub lanes: u32,
+    /// `wb_dat_i` in those lanes: the bits written 1.
+    pub ones: u32,
+}
+
+impl Request {
+    /// The access of `b` for a slave whose `wb_ack_o` is `ack`. Panics if the address does
+    /// not fit `wb_adr_i` or `wb_sel_i` is wider than 4 bits.
+    pub fn decode(b: &WbBus, ack: bool) -> Request {
+        assert!(b.wb_adr_i < SPAN_BYTES, "wb_adr_i = {:#x}", b.wb_adr_i);
+        assert!(b.wb_sel_i < 16, "wb_sel_i = {:#x}", b.wb_sel_i);
+        let req = b.wb_cyc_i && b.wb_stb_i && !ack;
+        let lanes = lane_mask(b.wb_sel_i);
+        Request {
+            off: b.wb_adr_i & !3,
+            rd: req && !b.wb_we_i,
+            wr: req && b.wb_we_i,
+            lanes,
+            ones: b.wb_dat_i & lanes,
+        }
+    }
+}
+
 /// `raw` (S bits, two's complement) sign-extended to 64 bits.
 pub fn sign_extend(raw: u64, s: u32) -> u64 {
     if raw & (1 << (s - 1)) != 0 {
@@ -270,27 +304,26 @@ impl WbRegsModel {
         let st = &inp.status;
         let b = &inp.bus;
         self.check(st);
-        assert!(b.wb_adr_i < SPAN_BYTES, "wb_adr_i = {:#x}", b.wb_adr_i);
-        assert!(b.wb_sel_i < 16, "wb_sel_i = {:#x}", b.wb_sel_i);
+        let Request {
+            off,
+            rd,
+            wr,
+            lanes,
+            ones,
+        } = Request::decode(b, self.s.ack);
         if inp.reset {
             self.s = State::default();
             return self.outputs();
         }
         let s = self.s;
         let mut n = s;
-        let off = b.wb_adr_i & !3;
-        let req = b.wb_cyc_i && b.wb_stb_i && !s.ack;
-        let rd = req && !b.wb_we_i;
-        let wr = req && b.wb_we_i;
-        n.ack = req;
+        n.ack = rd || wr;
         n.dat = if rd { self.read(off, st) } else { 0 };
         if rd {
             if let Some(k) = SPEEDS.iter().position(|e| e.0 == off) {
                 n.hi[k] = (sign_extend(st.speeds()[k], self.mp().speed_bits()) >> 32) as u32;
             }
         }
-        let lanes = lane_mask(b.wb_sel_i);
-        let ones = b.wb_dat_i & lanes;
         let rw = |name: &str, old: u32| {
             let mask = self.map.reg(name).mask_of(Access::Rw);
             ((old & !lanes) | ones) & mask

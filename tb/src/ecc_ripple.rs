@@ -138,6 +138,15 @@ impl Identification {
         })
     }
 
+    /// Ok when e and θ0 are both within their budget; else the summary.
+    pub fn within_budget(&self) -> Result<(), String> {
+        if self.e_error.abs() <= self.budget.0 && self.theta0_error.abs() <= self.budget.1 {
+            Ok(())
+        } else {
+            Err(format!("outside the budget: {}", self.summary()))
+        }
+    }
+
     /// One line: e and θ0 identified, their errors and budgets.
     pub fn summary(&self) -> String {
         format!(

@@ -204,16 +204,7 @@ fn corrected_ripple_on_verilog() {
                     check_revolution(&id.gathered, p.lines(), 1e8 * 60.0 / rpm),
                     Ok(())
                 );
-                assert!(
-                    id.e_error.abs() <= id.budget.0,
-                    "{rpm} rpm: {}",
-                    id.summary()
-                );
-                assert!(
-                    id.theta0_error.abs() <= id.budget.1,
-                    "{rpm} rpm: {}",
-                    id.summary()
-                );
+                assert_eq!(id.within_budget(), Ok(()), "{rpm} rpm");
             }
             None => assert!(
                 revs < 2.1,
@@ -300,16 +291,7 @@ fn identified_then_corrected_on_verilog() {
         };
         let id = identify_on_verilog(&sim, &p, &setup).unwrap();
         println!("{}", id.summary());
-        assert!(
-            id.e_error.abs() <= id.budget.0,
-            "{rpm} rpm: {}",
-            id.summary()
-        );
-        assert!(
-            id.theta0_error.abs() <= id.budget.1,
-            "{rpm} rpm: {}",
-            id.summary()
-        );
+        assert_eq!(id.within_budget(), Ok(()), "{rpm} rpm");
         // The goal, by a wide margin: e within 1 %, θ0 within 1°.
         assert!(id.e_error.abs() < 0.01 * e && id.theta0_error.abs() < 1f64.to_radians());
         setup.loaded = Some((id.identified.e, id.identified.theta0));

@@ -141,16 +141,19 @@ impl Bench {
             let sel = ((r >> 8) & 0xF) as u8;
             let gap = (r >> 12) % 8;
             self.idle(gap);
+            // Not the interrupt enables, nor ECC_IRQ_STATUS: an enabled core event or a
+            // cleared IDENT bit would change what the firmware waits for.
             let harmless = [
                 regmap::ID,
                 regmap::POSITION,
-                regmap::IRQ_ENABLE,
+                regmap::STATUS,
                 regmap::IRQ_STATUS,
                 0x8C,
                 m::ECC_ID,
+                m::ECC_VERSION,
                 m::ECC_STATUS,
-                m::ECC_IRQ_STATUS,
                 m::IDENT_T_MIN,
+                m::IDENT_P,
                 m::SPEED_N3C_LO,
                 0xF4,
                 0xFC,
@@ -164,10 +167,11 @@ impl Bench {
         }
     }
 
-    /// A 64-bit speed read as LO then HI.
+    /// A 64-bit speed read as LO then HI, back to back (no noise between: a random read of
+    /// the same LO would latch a newer HI).
     fn read_speed(&mut self, lo: u32, hi: u32) -> i64 {
         let l = self.read(lo);
-        let h = self.read(hi);
+        let h = self.access(false, hi, 0, 0);
         ((u64::from(h) << 32) | u64::from(l)) as i64
     }
 }
@@ -285,11 +289,7 @@ fn check_run(p: &Params, setup: &RippleSetup, b: &Bench, run: &Run) {
     };
     let id = Identification::of(p, setup, &log).unwrap();
     println!("{}", id.summary());
-    assert!(
-        id.e_error.abs() <= id.budget.0 && id.theta0_error.abs() <= id.budget.1,
-        "{}",
-        id.summary()
-    );
+    assert_eq!(id.within_budget(), Ok(()));
     assert!(
         run.speeds.len() >= 4,
         "{} corrected windows",
