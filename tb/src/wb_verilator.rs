@@ -27,13 +27,6 @@ pub fn waivers() -> String {
     )
 }
 
-/// Write the emitted Verilog and the waivers into `dir` for a tool to read.
-pub fn stage(dir: &Path, verilog: &str) -> std::io::Result<(PathBuf, PathBuf)> {
-    let v = format!("{TOP_MODULE}.v");
-    let paths = stream_harness::stage(dir, &[(&v, verilog), ("wb_waivers.vlt", &waivers())])?;
-    Ok((paths[0].clone(), paths[1].clone()))
-}
-
 /// `verilator --lint-only -Wall` on `encspeed_wb.v` with the documented waivers; Ok on a
 /// clean lint (a warning fails the run).
 pub fn lint(verilog: &str) -> Result<String, String> {
