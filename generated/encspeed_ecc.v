@@ -67,7 +67,7 @@
 //   output ident_p_max[15:0]: line number of the edge that closed it (first on ties)
 //   output ident_sum_t[71:0]: sum of the line periods T, clock cycles (the revolution's length)
 //   output ident_sum_sin[71:0]: sum of T * round(Q sin(2 pi p / lines)), two's complement, Q = 2^23 - 1, p the line number of the edge closing T
-//   output ident_sum_cos[71:0]: sum of T * round(Q cos(2 pi p / lines)), two's complement; e and theta0 from the three sums: golden::ident_gatherer::identify_from_sums (docs/eccentricity-hardware.md)
+//   output ident_sum_cos[71:0]: sum of T * round(Q cos(2 pi p / lines)), two's complement; e and theta0 from the three sums: golden::ecc::ident_gatherer::identify_from_sums (docs/eccentricity-hardware.md)
 
 
 

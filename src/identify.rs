@@ -15,7 +15,7 @@ use golden::eccentric::identify::{
 };
 use golden::eccentric::motion::{EccentricDisc, JitterMotion};
 use golden::eccentric::{EccError, Eccentricity, Model};
-use golden::plant::{Channel, Edge};
+use golden::ideal::plant::{Channel, Edge};
 use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

@@ -3,8 +3,8 @@
 //! Exit codes: 0 success, 1 a failed run (tool missing, mismatch), 2 bad parameters or usage.
 
 use clap::{Args, Parser, Subcommand};
-use golden::bittrue::CoreInputs;
 use golden::params::{ParamError, Params, Spec};
+use golden::top::core::CoreInputs;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -547,7 +547,7 @@ fn main() -> ExitCode {
             svg,
             title,
         } => {
-            use golden::freqresp::{BodeSpec, Source};
+            use golden::smallsignal::freqresp::{BodeSpec, Source};
             let source = match source.as_deref().map(str::parse::<Source>).transpose() {
                 Ok(s) => s,
                 Err(e) => return fail(2, format!("bode: --{e}")),
@@ -629,7 +629,7 @@ fn generate(p: &Params, out: &Path) -> Outcome {
     };
     write("encspeed_core.v", &e.verilog)?;
     write("encspeed_core.toml", &e.manifest)?;
-    for (name, text) in hdl::emit_wb::emit_wb(p) {
+    for (name, text) in hdl::emit::wb::emit_wb(p) {
         write(name, &text)?;
     }
     // The eccentricity-corrected top needs a multiple of 4 lines; the core does not, so a
@@ -637,13 +637,13 @@ fn generate(p: &Params, out: &Path) -> Outcome {
     let ecc = match hdl::emit_ecc(p) {
         Ok(v) => {
             write("encspeed_ecc.v", &v)?;
-            for (name, text) in hdl::emit_wb::emit_ecc_wb(p).map_err(|e| (2, e))? {
+            for (name, text) in hdl::emit::wb::emit_ecc_wb(p).map_err(|e| (2, e))? {
                 write(name, &text)?;
             }
             format!(
                 ", {}, {}",
                 out.join("encspeed_ecc.v").display(),
-                out.join(hdl::emit_wb::ECC_WB_VERILOG_FILE).display()
+                out.join(hdl::emit::wb::ECC_WB_VERILOG_FILE).display()
             )
         }
         Err(e) => {
@@ -730,7 +730,7 @@ fn docs(out: &Path) -> Outcome {
     let p = Params::new(Spec::default()).map_err(|e| (2, e.to_string()))?;
     for (name, text) in [
         ("ports.md", hdl::emit::ports_markdown(&p)),
-        ("registers.md", hdl::emit_wb::registers_markdown(&p)),
+        ("registers.md", hdl::emit::wb::registers_markdown(&p)),
     ] {
         let path = out.join(name);
         std::fs::write(&path, text)
@@ -895,7 +895,7 @@ fn synth(p: &Params, device: &str, package: &str) -> Outcome {
     // The complete core has about 430 port bits, more than any iCE40 package has pins: place
     // and route the Wishbone top `encspeed_wb` (the core behind its register file, about 80
     // pins), as a CPU-attached design would be.
-    hdl::emit_wb::write_all(p, &dir).map_err(|e| (1, e.to_string()))?;
+    hdl::emit::wb::write_all(p, &dir).map_err(|e| (1, e.to_string()))?;
     let clock = dir.join("clock.py");
     std::fs::write(
         &clock,
@@ -966,14 +966,14 @@ fn synth(p: &Params, device: &str, package: &str) -> Outcome {
 
 /// `encspeed bode`: sweep, CSV on stdout (and `csv`), summary on stderr, SVG to `svg`.
 fn bode(
-    spec: golden::freqresp::BodeSpec,
+    spec: golden::smallsignal::freqresp::BodeSpec,
     (fmin, fmax, points): (f64, f64, u32),
     csv: Option<&Path>,
     svg: Option<&Path>,
     title: Option<String>,
 ) -> Outcome {
-    use golden::freqresp::{log_spaced, to_csv, Estimator, Experiment};
-    let bad = |e: golden::freqresp::FreqRespError| (2, format!("bode: --{e}"));
+    use golden::smallsignal::freqresp::{log_spaced, to_csv, Estimator, Experiment};
+    let bad = |e: golden::smallsignal::freqresp::FreqRespError| (2, format!("bode: --{e}"));
     let exp = Experiment::new(spec).map_err(bad)?;
     let freqs = log_spaced(fmin, fmax, points).map_err(bad)?;
     // Every frequency is validated before anything runs.
@@ -1034,7 +1034,7 @@ fn bode(
     }
     let quarter = 0.25 / s.ts_s;
     let max_abs = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, |a, v| a.max(v.abs()));
-    let upto = |m: &&golden::freqresp::Measurement| m.f_hz <= quarter * (1.0 + 1e-9);
+    let upto = |m: &&golden::smallsignal::freqresp::Measurement| m.f_hz <= quarter * (1.0 + 1e-9);
     eprintln!(
         "{caption}: model {}; simulated {:.4} r/min, amplitude {} of it, T_e = {:.6e} s; \
          {} points in {:.1} s; max |phase error| {:.3} deg up to fs/4 ({:.3} deg overall), \

@@ -1,18 +1,18 @@
-//! The bit-true counters of the three baseline estimators — `golden::pc_counter` (fixed
-//! time), `golden::et_timer` (fixed space), `golden::mt_counter` (M/T):
+//! The bit-true counters of the three baseline estimators — `golden::baselines::pc_counter` (fixed
+//! time), `golden::baselines::et_timer` (fixed space), `golden::baselines::mt_counter` (M/T):
 //! - hand-worked sequences (expected values by hand, in the comments);
-//! - plant-driven pulse trains (`golden::plant`, x1 steps as the quadrature decoder makes
+//! - plant-driven pulse trains (`golden::ideal::plant`, x1 steps as the quadrature decoder makes
 //!   them, each stamped at the first clock edge at or after its instant): the integer
 //!   outputs equal the layer-1 float estimators (`golden::ideal::fixed_time`,
-//!   `golden::ideal::fixed_space`, `golden::mt::mt_estimates`) on the stamped instants;
+//!   `golden::ideal::fixed_space`, `golden::ideal::mt::mt_estimates`) on the stamped instants;
 //! - the same measurements against the error bounds (max and RMS), at constant speed.
 
-use golden::et_timer::{et_error_bound, EtInputs, EtOutputs, EtTimer};
+use golden::baselines::et_timer::{et_error_bound, EtInputs, EtOutputs, EtTimer};
+use golden::baselines::mt_counter::{mt_error_bound_at_speed, MtCounter, MtInputs, MtOutputs};
+use golden::baselines::pc_counter::{pc_error_bound, PcCounter, PcInputs, PcOutputs};
+use golden::ideal::mt::mt_estimates;
+use golden::ideal::plant::{edges, initial_levels, Channel, Disc, Profile};
 use golden::ideal::{fixed_space, fixed_time};
-use golden::mt::mt_estimates;
-use golden::mt_counter::{mt_error_bound_at_speed, MtCounter, MtInputs, MtOutputs};
-use golden::pc_counter::{pc_error_bound, PcCounter, PcInputs, PcOutputs};
-use golden::plant::{edges, initial_levels, Channel, Disc, Profile};
 
 const F: (bool, bool) = (true, true);
 const B: (bool, bool) = (true, false);

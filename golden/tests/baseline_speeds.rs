@@ -4,12 +4,12 @@
 //! algorithm ([`hardware_magnitude`], [`shift_add_multiply`]) is checked exhaustively at
 //! small widths and on random wide operands against that restated rule.
 
-use golden::baseline_speeds::{
+use golden::baselines::baseline_speeds::{
     baseline_speeds, hardware_magnitude, latency_cycles, shift_add_multiply, speed_bits, speed_et,
     speed_mt, speed_pc, BaselineFormat, BaselineRequest, BaselineSpeedsInputs, BaselineSpeedsModel,
     BaselineSpeedsOutputs, BaselineValues, FormatError,
 };
-use golden::speed_calc::speed_lsb_error;
+use golden::estimator::speed_calc::speed_lsb_error;
 use proptest::prelude::*;
 
 fn fmt(n: u32, f: u32) -> BaselineFormat {

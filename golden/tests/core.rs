@@ -1,11 +1,11 @@
-//! Hand-checked behaviour of the bit-true core model (`golden::core::CoreModel`): counts in
+//! Hand-checked behaviour of the bit-true core model (`golden::top::core::CoreModel`): counts in
 //! x1/x2/x4, known speeds of every estimator on exact square waves, reversal, faults,
 //! configuration defaults and latencies. Expected values are worked by hand in the
 //! comments (Rairán eq. (11), Table 1 traces), not taken from the model.
 
-use golden::core::{CoreInputs, CoreModel, CoreOutputs};
 use golden::params::{Params, Spec};
-use golden::ports::Latency;
+use golden::top::core::{CoreInputs, CoreModel, CoreOutputs};
+use golden::top::ports::Latency;
 
 const DT: u64 = 160;
 

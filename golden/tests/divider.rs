@@ -3,7 +3,7 @@
 //! description of the handshake (start accepted when idle, done exactly W edges later)
 //! written here independently of the model's registers.
 
-use golden::divider::{
+use golden::arith::seq_divider::{
     divide, fixed_quotient, latency_cycles, mask, shifted_numerator, DividerInputs, DividerOutputs,
     Overflow, SeqDividerModel,
 };
@@ -299,7 +299,7 @@ proptest! {
     ) {
         let mut m = SeqDividerModel::new(w);
         // (edges left until done, expected result) of the division in flight.
-        let mut pending: Option<(u32, golden::divider::Division)> = None;
+        let mut pending: Option<(u32, golden::arith::seq_divider::Division)> = None;
         let mut held = DividerOutputs::default();
         for (k, &(roll, a, b)) in cycles.iter().enumerate() {
             let inp = DividerInputs {

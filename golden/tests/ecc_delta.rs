@@ -1,4 +1,4 @@
-//! `golden::ecc_delta`: the bit-true correction δ of a span against hand-computed answers,
+//! `golden::ecc::ecc_delta`: the bit-true correction δ of a span against hand-computed answers,
 //! against f64 sin/cos within its derived error budget (max and RMS), against the f64
 //! correction of `golden::eccentric::correct` (`Correction::count`), the cycle model against
 //! the arithmetic's definition (timing included), and the ripple left on the rigid-disc
@@ -6,14 +6,14 @@
 //!
 //! Figures: `cargo test --release -p encspeed-golden --test ecc_delta -- --nocapture`.
 
-use golden::ecc_delta::{
+use golden::ecc::ecc_delta::{
     coefficients, delta_f64, delta_raw, error_budget, error_budget_max, latency_cycles, EccDelta,
     Inputs, Outputs, Request, DELTA_FRAC_BITS,
 };
 use golden::eccentric::correct::{ripple, Correction};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
-use golden::plant::Profile;
+use golden::ideal::plant::Profile;
 use std::f64::consts::TAU;
 
 const ONE: f64 = (1u64 << DELTA_FRAC_BITS) as f64;

@@ -1,19 +1,19 @@
 //! The corrected M/T speed on an eccentric disc, in the hardware's integer arithmetic:
 //! clock-stamped pulses of the rigid disc (K = 1024, e = 0.35/30, θ0 = 50°, 100 MHz clock,
-//! dt = 1 ms, x1), M/T windows as `golden::mt_counter` forms them, δ from
-//! `golden::ecc_delta` (bit-true, D = 24) and the speed from `golden::ecc_mt_speed`
-//! (bit-true) against the uncorrected `golden::baseline_speeds::speed_mt`. The truth is the
+//! dt = 1 ms, x1), M/T windows as `golden::baselines::mt_counter` forms them, δ from
+//! `golden::ecc::ecc_delta` (bit-true, D = 24) and the speed from `golden::ecc::ecc_mt_speed`
+//! (bit-true) against the uncorrected `golden::baselines::baseline_speeds::speed_mt`. The truth is the
 //! plant's constant shaft speed; the floor is M/T's own quantisation, 1/T̂ per estimate
-//! (`golden::mt`), which averages out of the once-per-revolution harmonic. Run with
+//! (`golden::ideal::mt`), which averages out of the once-per-revolution harmonic. Run with
 //! `--nocapture` for the figures of docs/eccentricity-hardware.md.
 
-use golden::baseline_speeds::{speed_mt, BaselineFormat};
-use golden::ecc_delta::{coefficients, delta_raw, Request};
-use golden::ecc_mt_speed::speed_mtc;
+use golden::baselines::baseline_speeds::{speed_mt, BaselineFormat};
+use golden::ecc::ecc_delta::{coefficients, delta_raw, Request};
+use golden::ecc::ecc_mt_speed::speed_mtc;
 use golden::eccentric::correct::{once_per_rev, ripple};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
-use golden::plant::Profile;
+use golden::ideal::plant::Profile;
 use std::f64::consts::TAU;
 
 const K: u32 = 1024;

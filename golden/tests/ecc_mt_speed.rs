@@ -1,18 +1,18 @@
-//! Tests of the corrected M/T speed model `golden::ecc_mt_speed`. Truth from outside the
-//! model: values worked by hand; `golden::baseline_speeds::speed_mt` (an independent,
+//! Tests of the corrected M/T speed model `golden::ecc::ecc_mt_speed`. Truth from outside the
+//! model: values worked by hand; `golden::baselines::baseline_speeds::speed_mt` (an independent,
 //! already-verified definition) for δ = 0; the rounding rule restated here from quotient and
 //! remainder; f64. The hardware algorithm (`hardware_*`) is proven equal to the exact rule
 //! exhaustively at small widths (every m, t, dt, δ and mode_shift) and on random operands at
 //! N = 24 and 32 with the real δ format; the schedule against edge counts worked by hand.
 
-use golden::baseline_speeds::{speed_mt, BaselineFormat};
-use golden::ecc_delta::{DELTA_BITS, DELTA_FRAC_BITS};
-use golden::ecc_mt_speed::{
+use golden::baselines::baseline_speeds::{speed_mt, BaselineFormat};
+use golden::ecc::ecc_delta::{DELTA_BITS, DELTA_FRAC_BITS};
+use golden::ecc::ecc_mt_speed::{
     corrected_bits, ecc_mt_speed, exact_speed, hardware_divide, hardware_multiply,
     hardware_request, hardware_speed, latency_cycles, speed_mtc, EccMtRequest, EccMtSpeedInputs,
     EccMtSpeedModel, EccMtSpeedOutputs, EccWidths,
 };
-use golden::speed_calc::speed_lsb_error;
+use golden::estimator::speed_calc::speed_lsb_error;
 use proptest::prelude::*;
 
 fn fmt(n: u32, f: u32) -> BaselineFormat {

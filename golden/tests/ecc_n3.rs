@@ -1,8 +1,8 @@
-//! `golden::ecc_n3` (the bit-true n3 corrector): hand-worked values, the hardware
+//! `golden::ecc::ecc_n3` (the bit-true n3 corrector): hand-worked values, the hardware
 //! algorithm against the rule (exhaustive on small operands, proptest on the full ranges),
 //! the rule against the f64 rule of `golden::eccentric::n3`, and the timing.
 
-use golden::ecc_n3::{
+use golden::ecc::ecc_n3::{
     corrected, corrected_magnitude, factor, hardware_magnitude, EccN3, EccN3Inputs, LATENCY_CYCLES,
 };
 use proptest::prelude::*;

@@ -3,17 +3,17 @@
 //! lines by the index, `cfg_z_mode` = 1), and the identification gathered by the same top
 //! (armed at the end of reset: the top holds the arm until the index that aligns the
 //! position) against the disc's e and θ0 within the budget of
-//! `golden::ident_gatherer::error_budget`. The Verilog's figures: tb/tests/ecc_top.rs.
+//! `golden::ecc::ident_gatherer::error_budget`. The Verilog's figures: tb/tests/ecc_top.rs.
 
-use golden::bittrue::CoreInputs;
-use golden::ecc_delta::coefficients;
-use golden::ecc_top::{check_revolution, ArmedModel, EccTopInputs, IDENT_DONE_AFTER_INDEX};
+use golden::ecc::ecc_delta::coefficients;
+use golden::ecc::ident_gatherer::{error_budget, identify_from_sums, GatherOutputs};
 use golden::eccentric::correct::once_per_rev;
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
-use golden::ident_gatherer::{error_budget, identify_from_sums, GatherOutputs};
+use golden::ideal::plant::{ClockSampler, Profile};
 use golden::params::{Params, Spec};
-use golden::plant::{ClockSampler, Profile};
+use golden::top::core::CoreInputs;
+use golden::top::ecc_top::{check_revolution, ArmedModel, EccTopInputs, IDENT_DONE_AFTER_INDEX};
 use std::f64::consts::TAU;
 
 const K: u32 = 1024;

@@ -13,7 +13,7 @@ use golden::eccentric::identify::{
 use golden::eccentric::motion::{EccentricDisc, JitterMotion, ShaftMotion};
 use golden::eccentric::paper::{self, E_TEXT};
 use golden::eccentric::{Eccentricity, Model, RPM_PER_RAD_S};
-use golden::plant::{edges, pulse_times, Channel, Disc, Edge, Profile};
+use golden::ideal::plant::{edges, pulse_times, Channel, Disc, Edge, Profile};
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 
@@ -174,12 +174,12 @@ fn centred_disc_reproduces_the_plant() {
     let p = Profile::new(
         0.013,
         vec![
-            golden::plant::Segment::Ramp {
+            golden::ideal::plant::Segment::Ramp {
                 from: 3.0,
                 to: -2.0,
                 duration: 1.0,
             },
-            golden::plant::Segment::Sine {
+            golden::ideal::plant::Segment::Sine {
                 mean: 0.5,
                 amplitude: 2.0,
                 freq_hz: 3.0,
@@ -200,7 +200,7 @@ fn centred_disc_reproduces_the_plant() {
     assert_edges_consistent(&d, &p, &ours);
     assert_eq!(
         d.initial_levels(&p),
-        golden::plant::initial_levels(&p, &disc)
+        golden::ideal::plant::initial_levels(&p, &disc)
     );
 }
 
@@ -669,7 +669,7 @@ fn correction_rigid_disc_mt_windows() {
 
 #[test]
 fn eccentric_edges_feed_the_existing_estimators() {
-    // The eccentric disc's A edges go straight into golden::mt; its uncorrected M/T equals
+    // The eccentric disc's A edges go straight into golden::ideal::mt; its uncorrected M/T equals
     // this module's mt_speeds with no correction, estimate for estimate.
     let (e, theta0, rpm, dt) = (e_paper(), 2.5, 1000.0, 1e-3);
     let d = EccentricDisc::new(K, ecc(Model::Rigid, e, theta0)).unwrap();
@@ -677,7 +677,7 @@ fn eccentric_edges_feed_the_existing_estimators() {
     let p = Profile::constant(speed, 1.0 / speed).unwrap();
     let es = d.edges(&p);
     let pulses = pulse_times(&es, Channel::A, true);
-    let reference = golden::mt::mt_estimates(&pulses, dt, 0.0, p.duration());
+    let reference = golden::ideal::mt::mt_estimates(&pulses, dt, 0.0, p.duration());
     let omega_lim = 1.0 / (f64::from(K) * dt); // rev/s
     let ours = mt_speeds(&d.line_crossings(&p), dt, &Correction::none(K));
     let theirs: Vec<f64> = reference
@@ -691,7 +691,7 @@ fn eccentric_edges_feed_the_existing_estimators() {
     }
     let r = ripple(&theirs, speed * TAU);
     println!(
-        "golden::mt on the eccentric disc, 1000 rpm, dt 1 ms: peak {:.1} ppm",
+        "golden::ideal::mt on the eccentric disc, 1000 rpm, dt 1 ms: peak {:.1} ppm",
         r.peak * 1e6
     );
     assert!((r.peak - e / (1.0 - e)).abs() < 2e-4);

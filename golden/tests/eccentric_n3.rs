@@ -9,8 +9,8 @@ use golden::eccentric::correct::{once_per_rev, ripple, Correction};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::n3::{n3_on_disc, N3Sample};
 use golden::eccentric::{Eccentricity, Model};
-use golden::plant::Profile;
-use golden::rairan::er3_max;
+use golden::estimator::bounds::er3_max;
+use golden::ideal::plant::Profile;
 use std::f64::consts::TAU;
 
 const K: u32 = 1024;

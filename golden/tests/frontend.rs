@@ -9,7 +9,7 @@ use golden::frontend::{
     PositionCounter, QuadratureDecoder, MODE_INVALID, MODE_X1, MODE_X2, MODE_X4, Z_MODE_IGNORE,
     Z_MODE_LATCH, Z_MODE_LATCH_RESET, Z_MODE_RESET,
 };
-use golden::plant::{edges, initial_levels, ClockSampler, Disc, Profile, Segment};
+use golden::ideal::plant::{edges, initial_levels, ClockSampler, Disc, Profile, Segment};
 use proptest::prelude::*;
 
 // ---------------------------------------------------------------------------------------

@@ -2,10 +2,10 @@
 //! Rairán's Table 1 (order of the four steps as in DESIGN-NOTES §3), and bounds come from
 //! the paper's equations (1), (6), (11) and (13), restated here rather than imported.
 
+use golden::ideal::plant::{edges, pulse_times, Channel, Disc, Profile};
 use golden::ideal::{
     fixed_space, fixed_time, n1, n2, n3, update_interval, IdealError, RairanIdeal, Update,
 };
-use golden::plant::{edges, pulse_times, Channel, Disc, Profile};
 
 /// Pulses at phase + n·period for n = 0, 1, … while ≤ t_end (s).
 fn train(phase: f64, period: f64, t_end: f64) -> Vec<f64> {

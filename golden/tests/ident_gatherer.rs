@@ -1,12 +1,12 @@
-//! `golden::ident_gatherer`: hand-worked sums on K = 4, the control sequence (arm, index,
+//! `golden::ecc::ident_gatherer`: hand-worked sums on K = 4, the control sequence (arm, index,
 //! done, overflow, reset), and on the rigid eccentric disc (K = 1024, 100 MHz clock,
 //! e = 0.35/30) the gathered results against the golden identification.
 
+use golden::ecc::ident_gatherer::{identify_from_sums, GatherInputs, GatherOutputs, IdentGatherer};
 use golden::eccentric::identify::{harmonic_fit, paper_identify, revolution_periods, FitOptions};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
-use golden::ident_gatherer::{identify_from_sums, GatherInputs, GatherOutputs, IdentGatherer};
-use golden::plant::Profile;
+use golden::ideal::plant::Profile;
 
 const Q: i128 = (1 << 23) - 1;
 

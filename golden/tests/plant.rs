@@ -3,7 +3,7 @@
 //! mirror symmetry of a reversal, a brute-force fine-grid scan of the level functions, and
 //! random profiles checked for the invariants of a quadrature signal.
 
-use golden::plant::{
+use golden::ideal::plant::{
     edges, initial_levels, pulse_times, Channel, ClockSampler, Disc, Edge, PlantError, Profile,
     Sample, Segment,
 };

@@ -1,8 +1,8 @@
-//! The sine table (`golden::sine_rom`): hand-worked values, the table's ½-LSB bound against
+//! The sine table (`golden::ecc::sine_rom`): hand-worked values, the table's ½-LSB bound against
 //! f64 sin, the compare-and-subtract index against `%`, and the read latency. The
 //! eccentricity correction built on it is tested in `ecc_delta.rs`.
 
-use golden::sine_rom::{full_scale, sine_index, sine_table, table_error_bound, SineRom};
+use golden::ecc::sine_rom::{full_scale, sine_index, sine_table, table_error_bound, SineRom};
 use std::f64::consts::TAU;
 
 #[test]

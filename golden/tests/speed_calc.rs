@@ -3,12 +3,12 @@
 //! independently, in f64), the exact fractions restated here and checked with u128
 //! cross-multiplication, and edge counts of the documented schedule worked by hand.
 
-use golden::ideal;
-use golden::params::{Params, Spec};
-use golden::speed_calc::{
+use golden::estimator::speed_calc::{
     latency_cycles, long_division, min_lossless_dt, speed_bits, speed_lsb_error, speeds,
     FormatError, SpeedCalcInputs, SpeedCalcModel, SpeedCalcOutputs, SpeedFormat, Speeds,
 };
+use golden::ideal;
+use golden::params::{Params, Spec};
 use proptest::prelude::*;
 
 fn fmt(n: u32, f: u32) -> SpeedFormat {
@@ -434,7 +434,7 @@ proptest! {
     ) {
         let spec = Spec { dt_cycles: dt, counter_bits: 16, clock_hz: 1e6, lines: 1,
             timeout_s: 60.0 * dt as f64 / 1e6 };
-        let mut t = golden::bittrue::Table1::new(&Params::new(spec).unwrap());
+        let mut t = golden::estimator::sync_estimator::Table1::new(&Params::new(spec).unwrap());
         let mut updates: Vec<u64> = vec![];
         for (k, &p) in pulses.iter().enumerate() {
             // Pulse density from the byte: dense bursts and long gaps.

@@ -18,7 +18,7 @@
 //! | [`MtCounter`] | `mt_counter.rs` | M/T: per window, steps m and cycles T between the anchor and the last step |
 //! | [`BaselineSpeeds`] | `baseline_speeds.rs` | PC, ET and M/T speeds as signed fixed point (shared divider) |
 //! | [`FaultFlags`] | `fault_flags.rs` | sticky fault flags and the glitch counter |
-//! | [`WbRegs`] | `wb_regs.rs` | Wishbone B4 classic register file of the core (map in `golden::regmap`) |
+//! | [`WbRegs`] | `wb_regs.rs` | Wishbone B4 classic register file of the core (map in `golden::bus::regmap`) |
 //! | `EncspeedWb` | `wishbone_top.rs` | top `encspeed_wb`: the core behind its Wishbone register file |
 //!
 //! Blocks built and verified on their own (rust-hdl and Icarus against their golden models)
@@ -39,82 +39,55 @@
 //! [`build_core`] turns validated [`Params`](golden::params::Params) into a core of the right
 //! counter width behind the [`CoreSim`] trait (rust-hdl widths are const generics).
 
-pub mod baseline_speeds;
-pub mod core;
-pub mod ecc_delta;
-pub mod ecc_delta_arith;
-pub mod ecc_mt_speed;
-pub mod ecc_n3;
-pub mod ecc_regs;
-pub mod ecc_sim;
-pub mod ecc_top;
-pub mod ecc_wb_top;
+pub mod arith;
+pub mod baselines;
+pub mod bus;
+pub mod ecc;
 pub mod emit;
-pub mod emit_wb;
-pub mod et_timer;
-pub mod fault_flags;
-pub mod glitch_filter;
-pub mod ident_gatherer;
-pub mod ident_mac;
-pub mod line_tap;
-pub mod mode_scale;
-pub mod mt_corrector;
-pub mod mt_counter;
-pub mod n3_corrector;
-pub mod pc_counter;
-pub mod position_counter;
-pub mod quadrature_decoder;
-pub mod seq_divider;
+pub mod estimator;
+pub mod frontend;
 pub mod sim;
-pub mod sine_rom;
-pub mod span_delta;
-pub mod speed_calc;
-pub mod speed_hold;
-pub mod speed_tag;
-pub mod startup;
-pub mod sync_estimator;
-pub mod table_rom;
 #[cfg(test)]
 mod test_support;
-pub mod timebase;
-pub mod two_flop_sync;
-pub mod wb_regs;
-pub mod wishbone_top;
+pub mod top;
+pub mod verilog;
 
-pub use crate::core::EncspeedCore;
-pub use baseline_speeds::{baseline_speeds_verilog, BaselineSpeeds};
-pub use ecc_delta::{ecc_delta_verilog, EccDelta};
-pub use ecc_delta_arith::EccDeltaArith;
-pub use ecc_mt_speed::{ecc_mt_speed_verilog, EccMtSpeed};
-pub use ecc_n3::{ecc_n3_verilog, EccN3};
-pub use ecc_regs::EccRegs;
-pub use ecc_top::EncspeedEcc;
-pub use ecc_wb_top::{build_ecc_wb, EccWbSim, EncspeedEccWb};
+pub use arith::seq_divider::{seq_divider_verilog, SeqDivider};
+pub use baselines::baseline_speeds::{baseline_speeds_verilog, BaselineSpeeds};
+pub use baselines::et_timer::{et_timer_verilog, EtTimer};
+pub use baselines::mt_counter::{mt_counter_verilog, MtCounter};
+pub use baselines::pc_counter::{pc_counter_verilog, PcCounter};
+pub use bus::ecc_regs::EccRegs;
+pub use bus::wb_regs::{wb_regs_verilog, WbRegs};
+pub use ecc::ecc_delta::{ecc_delta_verilog, EccDelta};
+pub use ecc::ecc_delta_arith::EccDeltaArith;
+pub use ecc::ecc_mt_speed::{ecc_mt_speed_verilog, EccMtSpeed};
+pub use ecc::ecc_n3::{ecc_n3_verilog, EccN3};
+pub use ecc::ident_gatherer::{ident_gatherer_verilog, IdentGatherer};
+pub use ecc::ident_mac::IdentMac;
+pub use ecc::line_tap::LineTap;
+pub use ecc::mt_corrector::MtCorrector;
+pub use ecc::n3_corrector::N3Corrector;
+pub use ecc::sine_rom::{sine_rom_verilog, SineRom};
+pub use ecc::span_delta::SpanDelta;
+pub use ecc::table_rom::TableRom;
+pub use emit::wb::emit_wb;
 pub use emit::{emit_core, emit_ecc, EmitInfo};
-pub use emit_wb::emit_wb;
-pub use et_timer::{et_timer_verilog, EtTimer};
-pub use fault_flags::FaultFlags;
-pub use glitch_filter::{glitch_filter_verilog, GlitchFilter};
-pub use ident_gatherer::{ident_gatherer_verilog, IdentGatherer};
-pub use ident_mac::IdentMac;
-pub use line_tap::LineTap;
-pub use mode_scale::ModeScale;
-pub use mt_corrector::MtCorrector;
-pub use mt_counter::{mt_counter_verilog, MtCounter};
-pub use n3_corrector::N3Corrector;
-pub use pc_counter::{pc_counter_verilog, PcCounter};
-pub use position_counter::{position_counter_verilog, PositionCounter};
-pub use quadrature_decoder::{quadrature_decoder_verilog, QuadratureDecoder};
-pub use seq_divider::{seq_divider_verilog, SeqDivider};
-pub use sim::{build_core, CoreSim};
-pub use sine_rom::{sine_rom_verilog, SineRom};
-pub use span_delta::SpanDelta;
-pub use speed_calc::{speed_calc_verilog, SpeedCalc};
-pub use speed_hold::SpeedHold;
-pub use startup::Startup;
-pub use sync_estimator::SyncEstimator;
-pub use table_rom::TableRom;
-pub use timebase::Timebase;
-pub use two_flop_sync::TwoFlopSync;
-pub use wb_regs::{wb_regs_verilog, WbRegs};
-pub use wishbone_top::{build_wb, EncspeedWb, WbSim};
+pub use estimator::mode_scale::ModeScale;
+pub use estimator::speed_calc::{speed_calc_verilog, SpeedCalc};
+pub use estimator::speed_hold::SpeedHold;
+pub use estimator::sync_estimator::SyncEstimator;
+pub use estimator::timebase::Timebase;
+pub use frontend::glitch_filter::{glitch_filter_verilog, GlitchFilter};
+pub use frontend::position_counter::{position_counter_verilog, PositionCounter};
+pub use frontend::quadrature_decoder::{quadrature_decoder_verilog, QuadratureDecoder};
+pub use frontend::startup::Startup;
+pub use frontend::two_flop_sync::TwoFlopSync;
+pub use sim::core_sim::{build_core, CoreSim};
+pub use sim::ecc_wb_sim::{build_ecc_wb, EccWbSim};
+pub use sim::wb_sim::{build_wb, WbSim};
+pub use top::core::EncspeedCore;
+pub use top::ecc_top::EncspeedEcc;
+pub use top::ecc_wb_top::EncspeedEccWb;
+pub use top::fault_flags::FaultFlags;
+pub use top::wb_top::EncspeedWb;

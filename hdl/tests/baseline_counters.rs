@@ -1,5 +1,5 @@
 //! `PcCounter`, `EtTimer` and `MtCounter` against their bit-true models
-//! (`golden::pc_counter`, `golden::et_timer`, `golden::mt_counter`), every cycle: the
+//! (`golden::baselines::pc_counter`, `golden::baselines::et_timer`, `golden::baselines::mt_counter`), every cycle: the
 //! rust-hdl simulation (direct drive) on proptest stimuli, and the emitted Verilog in Icarus
 //! Verilog (a self-checking replay bench written under `target/` at test time, ending in
 //! one `RESULT PASS`/`RESULT FAIL` line that the test asserts).
@@ -12,9 +12,9 @@
 mod common;
 
 use common::SplitMix;
-use golden::et_timer::{EtInputs, EtOutputs, EtTimer as EtModel};
-use golden::mt_counter::{MtCounter as MtModel, MtInputs, MtOutputs};
-use golden::pc_counter::{PcCounter as PcModel, PcInputs, PcOutputs};
+use golden::baselines::et_timer::{EtInputs, EtOutputs, EtTimer as EtModel};
+use golden::baselines::mt_counter::{MtCounter as MtModel, MtInputs, MtOutputs};
+use golden::baselines::pc_counter::{PcCounter as PcModel, PcInputs, PcOutputs};
 use hdl::{
     et_timer_verilog, mt_counter_verilog, pc_counter_verilog, EtTimer, MtCounter, PcCounter,
 };

@@ -1,4 +1,4 @@
-//! `BaselineSpeeds` against its bit-true model `golden::baseline_speeds::BaselineSpeedsModel`,
+//! `BaselineSpeeds` against its bit-true model `golden::baselines::baseline_speeds::BaselineSpeedsModel`,
 //! every cycle: the rust-hdl simulation (direct drive) on proptest stimuli for (N, F) =
 //! (8, 2), (12, 8), (24, 16) and the ends (32, 24) (random start timings, bursts of starts
 //! while busy, resets mid-computation, every `mode_shift`, corner operands 0, 1 and 2^N − 1),
@@ -12,7 +12,7 @@
 mod common;
 
 use common::SplitMix;
-use golden::baseline_speeds::{
+use golden::baselines::baseline_speeds::{
     BaselineFormat, BaselineRequest, BaselineSpeedsInputs, BaselineSpeedsModel,
     BaselineSpeedsOutputs, BaselineValues,
 };
@@ -193,7 +193,7 @@ proptest! {
 fn back_to_back_starts_give_one_result_per_latency() {
     type Uut = baseline_speeds_type!(12, 8);
     let _: fn() -> Uut = BaselineSpeeds::<12, 8, 21>::default;
-    let l = golden::baseline_speeds::latency_cycles(12, 8) as usize;
+    let l = golden::baselines::baseline_speeds::latency_cycles(12, 8) as usize;
     let cycles: Vec<Cycle> = (0..=6 * l)
         .map(|k| {
             let k = k as u64;
@@ -216,7 +216,7 @@ fn back_to_back_starts_give_one_result_per_latency() {
 /// with zero outputs, and the next start computes from scratch (model equality throughout).
 #[test]
 fn reset_at_every_cycle_of_a_computation() {
-    let l = golden::baseline_speeds::latency_cycles(8, 2) as usize;
+    let l = golden::baselines::baseline_speeds::latency_cycles(8, 2) as usize;
     for at in 0..=l + 1 {
         let cycles: Vec<Cycle> = (0..3 * l)
             .map(|k| Cycle {
@@ -246,7 +246,7 @@ fn reset_at_every_cycle_of_a_computation() {
 fn divider_corners() -> Vec<Cycle> {
     let (n, fb) = (8u32, 2u32);
     let sb = n + fb + 1;
-    let l = golden::baseline_speeds::latency_cycles(n, fb) as usize;
+    let l = golden::baselines::baseline_speeds::latency_cycles(n, fb) as usize;
     let mut cycles = vec![];
     let mut counts = [0usize; 4];
     for s in 0..3u32 {
@@ -294,7 +294,7 @@ fn divider_corners() -> Vec<Cycle> {
 #[test]
 fn divider_corners_at_n8_f2() {
     let cycles = divider_corners();
-    let l = golden::baseline_speeds::latency_cycles(8, 2) as usize;
+    let l = golden::baselines::baseline_speeds::latency_cycles(8, 2) as usize;
     // Every start gets its result (the last one's comes after the end).
     let results = compare::<8, 2, 11>(10, &cycles).unwrap() as usize;
     assert_eq!(results, cycles.len() / l - 1);
@@ -455,7 +455,7 @@ fn emitted_verilog_n12_f8_in_icarus_equals_model() {
 #[test]
 fn emitted_verilog_n8_f2_in_icarus_equals_model() {
     let corners = divider_corners();
-    let results = corners.len() / golden::baseline_speeds::latency_cycles(8, 2) as usize;
+    let results = corners.len() / golden::baselines::baseline_speeds::latency_cycles(8, 2) as usize;
     icarus_equals_model::<8, 2, 11>(0xba5e_5bee_d008, &corners, results as u32 + 600);
 }
 

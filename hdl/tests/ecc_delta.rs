@@ -1,4 +1,4 @@
-//! `EccDelta` against its bit-true model (`golden::ecc_delta::EccDelta`), every cycle: the
+//! `EccDelta` against its bit-true model (`golden::ecc::ecc_delta::EccDelta`), every cycle: the
 //! rust-hdl simulation (direct drive) on proptest stimuli for several (A, D, K), K = 1000
 //! and other K not a power of two included, and the emitted Verilog in Icarus Verilog on a
 //! long random stimulus (a self-checking replay bench under `target/`, ending in one
@@ -12,7 +12,7 @@
 mod common;
 
 use common::SplitMix;
-use golden::ecc_delta::{EccDelta as Model, Inputs, Outputs, Request, DELTA_BITS};
+use golden::ecc::ecc_delta::{EccDelta as Model, Inputs, Outputs, Request, DELTA_BITS};
 use hdl::{ecc_delta_verilog, EccDelta};
 use proptest::prelude::*;
 use rust_hdl::prelude::*;
@@ -187,13 +187,13 @@ fn named_scenarios_rust_hdl_equals_model() {
     assert!(results >= 13);
 }
 
-/// Requests whose accumulator R (golden::ecc_delta module docs, steps 1–4) lands exactly on a
+/// Requests whose accumulator R (golden::ecc::ecc_delta module docs, steps 1–4) lands exactly on a
 /// rounding tie or one unit below it, each followed by a quiet computation: an error of one
 /// unit of R anywhere in the datapath (a lost carry-in, a floor) changes `delta` there,
 /// where random operands would almost never show it.
 fn tie_requests(lines: u32, a: u32, d: u32, seed: u64, n: usize) -> Vec<Inputs> {
-    use golden::ecc_delta::{interpolate, split_position};
-    use golden::sine_rom::{sine_index, sine_table};
+    use golden::ecc::ecc_delta::{interpolate, split_position};
+    use golden::ecc::sine_rom::{sine_index, sine_table};
     let table = sine_table(lines, a, d);
     let at = |l: u64, m0: u64| table[sine_index(lines, a, l, m0) as usize];
     let k4 = u64::from(lines / 4);

@@ -1,4 +1,4 @@
-//! `EccMtSpeed` against its bit-true model `golden::ecc_mt_speed::EccMtSpeedModel`, every
+//! `EccMtSpeed` against its bit-true model `golden::ecc::ecc_mt_speed::EccMtSpeedModel`, every
 //! cycle: the rust-hdl simulation (direct drive) on proptest stimuli for (N, F) = (8, 16),
 //! (12, 8), (24, 16), (32, 16) and the ends (8, 2), (32, 24) (random start timings, bursts
 //! of starts while busy, resets mid-computation, every `mode_shift`, corner operands 0, 1,
@@ -14,11 +14,11 @@
 mod common;
 
 use common::SplitMix;
-use golden::baseline_speeds::BaselineFormat;
-use golden::ecc_mt_speed::{
+use golden::baselines::baseline_speeds::BaselineFormat;
+use golden::ecc::ecc_mt_speed::{
     latency_cycles, EccMtRequest, EccMtSpeedInputs, EccMtSpeedModel, EccMtSpeedOutputs, EccWidths,
 };
-use hdl::ecc_mt_speed::{ecc_mt_speed_verilog, EccMtSpeed};
+use hdl::ecc::ecc_mt_speed::{ecc_mt_speed_verilog, EccMtSpeed};
 use hdl::ecc_mt_speed_type;
 use proptest::prelude::*;
 use rust_hdl::prelude::*;
@@ -208,7 +208,7 @@ fn type_macro_fills_in_the_derived_widths() {
     let _: fn() -> ecc_mt_speed_type!(8, 16) = EccMtSpeed::<8, 16, 25, 40>::default;
     let _: fn() -> ecc_mt_speed_type!(23, 16) = EccMtSpeed::<23, 16, 40, 40>::default;
     let _: fn() -> ecc_mt_speed_type!(32, 16) = EccMtSpeed::<32, 16, 49, 49>::default;
-    assert_eq!(hdl::ecc_mt_speed::corrected_width(24), 41);
+    assert_eq!(hdl::ecc::ecc_mt_speed::corrected_width(24), 41);
 }
 
 /// Starts in every cycle with no reset: one result every L cycles (the pending request

@@ -1,4 +1,4 @@
-//! `EccN3` against its bit-true model (`golden::ecc_n3`), every cycle: the rust-hdl
+//! `EccN3` against its bit-true model (`golden::ecc::ecc_n3`), every cycle: the rust-hdl
 //! simulation on proptest stimuli at S = 25, 41 and 49 (N = 8, 24, 32), and the emitted
 //! Verilog in Icarus (self-checking replay bench under `target/`, one `RESULT` line).
 //!
@@ -9,9 +9,9 @@
 mod common;
 
 use common::SplitMix;
-use golden::ecc_delta::DELTA_BITS;
-use golden::ecc_n3::{EccN3 as Model, EccN3Inputs, EccN3Outputs};
-use hdl::ecc_n3::{ecc_n3_verilog, EccN3};
+use golden::ecc::ecc_delta::DELTA_BITS;
+use golden::ecc::ecc_n3::{EccN3 as Model, EccN3Inputs, EccN3Outputs};
+use hdl::ecc::ecc_n3::{ecc_n3_verilog, EccN3};
 use proptest::prelude::*;
 use rust_hdl::prelude::*;
 

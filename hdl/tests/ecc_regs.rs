@@ -1,5 +1,5 @@
 //! `EccRegs` (the eccentricity window's Wishbone slave) against its cycle model
-//! `golden::ecc_regs::EccRegsModel`, every cycle, at the narrowest and widest speeds of
+//! `golden::bus::ecc_regs::EccRegsModel`, every cycle, at the narrowest and widest speeds of
 //! `encspeed_ecc` (S = 25 for N = 8, S = 49 for N = 32) and the default (S = 41): random
 //! classic accesses (reads and writes of the window's offsets and of any other offset, with
 //! random byte lanes: staged coefficients, loads and arms with other bits set, W1C and
@@ -11,9 +11,9 @@
 mod common;
 
 use common::SplitMix;
-use golden::ecc_regmap::{self as m, LAYOUT};
-use golden::ecc_regs::{EccRegsInputs, EccRegsModel, EccRegsOutputs, EccStatus};
-use golden::wb_regs::WbBus;
+use golden::bus::ecc_regmap::{self as m, LAYOUT};
+use golden::bus::ecc_regs::{EccRegsInputs, EccRegsModel, EccRegsOutputs, EccStatus};
+use golden::bus::wb_regs::WbBus;
 use hdl::EccRegs;
 use rust_hdl::prelude::*;
 

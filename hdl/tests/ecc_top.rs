@@ -1,4 +1,4 @@
-//! `encspeed_ecc` (corrected M/T and n3) in rust-hdl against its bit-true model (`golden::ecc_top`), cycle for
+//! `encspeed_ecc` (corrected M/T and n3) in rust-hdl against its bit-true model (`golden::top::ecc_top`), cycle for
 //! cycle, on an eccentric disc driven forward, backward and through reversals, in x1, x2
 //! and x4, with random coefficients and dt short enough that windows queue in the
 //! corrector (the latest wins), with the identification armed at a random cycle after the
@@ -6,13 +6,13 @@
 //! forward run long enough for the armed revolution, the gathered count is K and Σ T the
 //! revolution's length in cycles to ±1 (worked from the speed, not by the code).
 
-use golden::bittrue::CoreInputs;
-use golden::ecc_top::{check_revolution, disc_inputs, ArmedModel, EccTopInputs};
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
+use golden::ideal::plant::Profile;
 use golden::params::{Params, Spec};
-use golden::plant::Profile;
-use hdl::ecc_sim::build_ecc;
+use golden::top::core::CoreInputs;
+use golden::top::ecc_top::{check_revolution, disc_inputs, ArmedModel, EccTopInputs};
+use hdl::sim::ecc_sim::build_ecc;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 
@@ -57,7 +57,7 @@ proptest! {
         };
         let (initial, changes) = disc.clock_changes(&profile, CLOCK);
         let (c, d) = if realistic {
-            golden::ecc_delta::coefficients(lines, e, theta0)
+            golden::ecc::ecc_delta::coefficients(lines, e, theta0)
         } else {
             coef
         };

@@ -1,7 +1,7 @@
 //! The front-end blocks (glitch filter, quadrature decoder, position counter) against their
 //! bit-true golden models, every cycle, on random stimuli with random resets and run-time
 //! configuration changes:
-//! - rust-hdl simulation (direct drive, as `hdl::sim`) = golden model: property tests;
+//! - rust-hdl simulation (direct drive, as `hdl::sim::core_sim`) = golden model: property tests;
 //! - emitted Verilog in Icarus = golden model: the same generators, many cases concatenated
 //!   into one replay per block (a second, independent simulator of what ships).
 //!

@@ -1,4 +1,4 @@
-//! `IdentGatherer` against its bit-true model (`golden::ident_gatherer`), every cycle: the
+//! `IdentGatherer` against its bit-true model (`golden::ecc::ident_gatherer`), every cycle: the
 //! rust-hdl simulation (direct drive) on proptest stimuli, and the emitted Verilog in Icarus
 //! Verilog (a self-checking replay bench written under `target/` at test time, ending in
 //! one `RESULT PASS`/`RESULT FAIL` line that the test asserts).
@@ -12,7 +12,7 @@
 mod common;
 
 use common::SplitMix;
-use golden::ident_gatherer::{sum_bits, GatherInputs, GatherOutputs, IdentGatherer as Model};
+use golden::ecc::ident_gatherer::{sum_bits, GatherInputs, GatherOutputs, IdentGatherer as Model};
 use hdl::{ident_gatherer_verilog, IdentGatherer};
 use proptest::prelude::*;
 use rust_hdl::prelude::*;

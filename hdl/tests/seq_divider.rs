@@ -1,4 +1,4 @@
-//! `SeqDivider<W>` against its bit-true model `golden::divider::SeqDividerModel`, every
+//! `SeqDivider<W>` against its bit-true model `golden::arith::seq_divider::SeqDividerModel`, every
 //! cycle: the rust-hdl simulation (direct drive) on proptest stimuli for several W, and the
 //! emitted Verilog of W = 24 in Icarus Verilog (a self-checking bench written under
 //! `target/` at test time), because rust-hdl's simulator and its Verilog can disagree.
@@ -6,7 +6,7 @@
 
 mod common;
 
-use golden::divider::{mask, DividerInputs, DividerOutputs, SeqDividerModel};
+use golden::arith::seq_divider::{mask, DividerInputs, DividerOutputs, SeqDividerModel};
 use hdl::{seq_divider_verilog, SeqDivider};
 use proptest::prelude::*;
 use rust_hdl::prelude::*;

@@ -1,4 +1,4 @@
-//! `SineRom` against its bit-true model (`golden::sine_rom`), every cycle: the rust-hdl
+//! `SineRom` against its bit-true model (`golden::ecc::sine_rom`), every cycle: the rust-hdl
 //! simulation (direct drive) on proptest stimuli with random K, and the emitted Verilog in
 //! Icarus Verilog (a self-checking replay bench written under `target/` at test time,
 //! ending in one `RESULT PASS`/`RESULT FAIL` line that the test asserts). The correction
@@ -10,7 +10,7 @@
 mod common;
 
 use common::SplitMix;
-use golden::sine_rom::SineRom as RomModel;
+use golden::ecc::sine_rom::SineRom as RomModel;
 use hdl::{sine_rom_verilog, SineRom};
 use proptest::prelude::*;
 use rust_hdl::prelude::*;

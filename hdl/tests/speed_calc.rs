@@ -1,4 +1,4 @@
-//! `SpeedCalc` against its bit-true model `golden::speed_calc::SpeedCalcModel`, every cycle:
+//! `SpeedCalc` against its bit-true model `golden::estimator::speed_calc::SpeedCalcModel`, every cycle:
 //! the rust-hdl simulation (direct drive) on proptest stimuli for N = 8, 16, 24, 32 and
 //! F = 0, 8, 16, 24 (random start timings, starts while busy, random resets), and the
 //! emitted Verilog in Icarus Verilog (a self-checking bench written under `target/` at test
@@ -9,7 +9,9 @@
 
 mod common;
 
-use golden::speed_calc::{SpeedCalcInputs, SpeedCalcModel, SpeedCalcOutputs, SpeedFormat, Speeds};
+use golden::estimator::speed_calc::{
+    SpeedCalcInputs, SpeedCalcModel, SpeedCalcOutputs, SpeedFormat, Speeds,
+};
 use hdl::{speed_calc_type, speed_calc_verilog, SpeedCalc};
 use proptest::prelude::*;
 use rust_hdl::prelude::*;
@@ -171,7 +173,7 @@ proptest! {
 fn back_to_back_starts_give_one_result_per_latency() {
     type Calc = speed_calc_type!(16, 8);
     let _: fn() -> Calc = SpeedCalc::<16, 8, 33, 25>::default;
-    let l = golden::speed_calc::latency_cycles(16, 8) as usize;
+    let l = golden::estimator::speed_calc::latency_cycles(16, 8) as usize;
     let cycles: Vec<Cycle> = (0..=6 * l)
         .map(|k| Cycle {
             roll: 500,

@@ -1,4 +1,4 @@
-//! `WbRegs` against its cycle model `golden::wb_regs::WbRegsModel`, every cycle, on random
+//! `WbRegs` against its cycle model `golden::bus::wb_regs::WbRegsModel`, every cycle, on random
 //! Wishbone transactions (reads and writes of mapped and unmapped offsets with random byte
 //! lanes, W1C writes to `STATUS` and `IRQ_STATUS`, LO-then-HI speed reads, idle cycles,
 //! resets, and cycles of arbitrary bus signals) and random status inputs (strobes, levels
@@ -16,9 +16,9 @@
 mod common;
 
 use common::SplitMix;
+use golden::bus::regmap::{self, MapParams, RegMap, LAYOUT, SPAN_BYTES, SPEEDS};
+use golden::bus::wb_regs::{CoreStatus, WbBus, WbRegsInputs, WbRegsModel, WbRegsOutputs};
 use golden::params::{Params, Spec};
-use golden::regmap::{self, MapParams, RegMap, LAYOUT, SPAN_BYTES, SPEEDS};
-use golden::wb_regs::{CoreStatus, WbBus, WbRegsInputs, WbRegsModel, WbRegsOutputs};
 use hdl::{wb_regs_verilog, WbRegs};
 use proptest::prelude::*;
 use rust_hdl::prelude::*;

@@ -2,7 +2,7 @@
 //! `encspeed_core` (PC, ET, n1, n3, M/T) against the true speed, with each one's computed
 //! error bound.
 //!
-//! The plant ([`golden::plant`]) turns a constant shaft speed r·ω_lim into exact A/B/Z edge
+//! The plant ([`golden::ideal::plant`]) turns a constant shaft speed r·ω_lim into exact A/B/Z edge
 //! instants, [`ClockSampler`] samples them at the clock, and the bit-true
 //! [`CoreModel`] (which the rust-hdl core and the emitted Verilog reproduce cycle for
 //! cycle) runs on them one cycle at a time, without storing the inputs. After settling,
@@ -25,15 +25,17 @@
 //! 2 cycles; 10 000 keeps a margin and round numbers. The slowest point then has one line
 //! per 100 dt = 1 s = 10⁶ cycles, and the run still sees six of its estimates.
 
-use golden::core::{mode_scale_error_lsb, mode_shift, CoreInputs, CoreModel};
-use golden::et_timer::et_error_bound;
+use golden::baselines::et_timer::et_error_bound;
+use golden::baselines::mt_counter::mt_error_bound_at_speed;
+use golden::baselines::pc_counter::pc_error_bound;
+use golden::estimator::bounds::{er1_max, er3_max, n3_error_budget};
+use golden::estimator::speed_calc::speed_lsb_error;
 use golden::ideal::fixed_space;
-use golden::mt_counter::mt_error_bound_at_speed;
+use golden::ideal::plant::{
+    edges, initial_levels, Channel, ClockSampler, Disc, Edge, Profile, Segment,
+};
 use golden::params::{Params, Spec, SPEED_FRAC_BITS};
-use golden::pc_counter::pc_error_bound;
-use golden::plant::{edges, initial_levels, Channel, ClockSampler, Disc, Edge, Profile, Segment};
-use golden::rairan::{er1_max, er3_max, n3_error_budget};
-use golden::speed_calc::speed_lsb_error;
+use golden::top::core::{mode_scale_error_lsb, mode_shift, CoreInputs, CoreModel};
 use plotters::prelude::*;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -19,8 +19,8 @@
 //! (updates, replaced updates, the timeout, Cdt saturation, revolutions) happen within a
 //! few thousand cycles.
 
-use golden::bittrue::CoreInputs;
 use golden::params::{Params, Spec};
+use golden::top::core::CoreInputs;
 
 /// Cycles of reset at the start of every [`Stim`].
 pub const START_RESET_CYCLES: usize = 3;
@@ -64,7 +64,7 @@ pub fn params16() -> Params {
 }
 
 /// The effective dt (clock cycles) the core uses for a `cfg_dt` value: 0 is the
-/// generation default, 1 is used as 2 (see `golden::core`).
+/// generation default, 1 is used as 2 (see `golden::top::core`).
 pub fn dt_eff(p: &Params, cfg_dt: u64) -> u64 {
     match cfg_dt {
         0 => p.dt_cycles(),
@@ -175,7 +175,7 @@ pub struct Cfg {
 }
 
 /// Writes a waveform cycle by cycle. The shaft angle is kept in quarter lines (the
-/// quadrature state): forward is (A, B) = 10 → 11 → 01 → 00 → 10, as `golden::plant`;
+/// quadrature state): forward is (A, B) = 10 → 11 → 01 → 00 → 10, as `golden::ideal::plant`;
 /// the index at the revolution mark is high in quarter 1 of each revolution, also as the
 /// plant.
 #[derive(Clone, Debug)]

@@ -1,7 +1,7 @@
 //! Run the golden model and the rust-hdl simulation on the same inputs, and compare.
 
-use golden::bittrue::{CoreInputs, CoreModel, CoreOutputs};
 use golden::params::Params;
+use golden::top::core::{CoreInputs, CoreModel, CoreOutputs};
 
 /// Outputs of the bit-true model, one per cycle.
 pub fn run_golden(p: &Params, inputs: &[CoreInputs]) -> Vec<CoreOutputs> {

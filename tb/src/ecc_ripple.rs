@@ -8,16 +8,16 @@
 //! θ0 that the Verilog identified ([`RippleSetup::loaded`]): the whole loop of the IP.
 
 use crate::ecc_verilator::{EccStrobe, EccVerilated, EventLog, EventRun};
-use golden::ecc_delta::coefficients;
+use golden::ecc::ecc_delta::coefficients;
+use golden::ecc::ident_gatherer::{error_budget, identify_from_sums, GatherOutputs};
 use golden::eccentric::correct::once_per_rev;
 use golden::eccentric::identify::Identified;
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
-use golden::ident_gatherer::{error_budget, identify_from_sums, GatherOutputs};
+use golden::estimator::bounds::n3_error_budget;
+use golden::ideal::plant::{Profile, Sample};
 use golden::params::Params;
-use golden::plant::{Profile, Sample};
-use golden::ports::Latency;
-use golden::rairan::n3_error_budget;
+use golden::top::ports::Latency;
 use plotters::prelude::*;
 use std::f64::consts::TAU;
 use std::path::Path;
@@ -27,7 +27,7 @@ use std::path::Path;
 pub const START_ANGLE_REV: f64 = -0.01;
 
 /// A constant-speed run on a rigid eccentric disc, x1 decoding, cfg_z_mode = 1, the
-/// corrector loaded with the coefficients (`golden::ecc_delta::coefficients`) of the disc's
+/// corrector loaded with the coefficients (`golden::ecc::ecc_delta::coefficients`) of the disc's
 /// own e and θ0 or of identified ones.
 #[derive(Clone, Copy, Debug)]
 pub struct RippleSetup {
@@ -112,13 +112,13 @@ pub struct Identification {
     pub cycle: u64,
     /// The gathered results.
     pub gathered: GatherOutputs,
-    /// e and θ0 from the sums (`golden::ident_gatherer::identify_from_sums`).
+    /// e and θ0 from the sums (`golden::ecc::ident_gatherer::identify_from_sums`).
     pub identified: Identified,
     /// Identified − true e.
     pub e_error: f64,
     /// Identified − true θ0, rad, wrapped to ±π.
     pub theta0_error: f64,
-    /// `golden::ident_gatherer::error_budget`: (e, θ0 rad).
+    /// `golden::ecc::ident_gatherer::error_budget`: (e, θ0 rad).
     pub budget: (f64, f64),
 }
 
@@ -206,7 +206,7 @@ pub fn figures(v: &[(f64, f64)]) -> Figures {
 }
 
 /// One n3 estimate: shaft angle (rad, from the first kept), relative error, and Rairán's
-/// bound for the hardware at its own n1 = Nep1/Ndt1 (`golden::rairan::n3_error_budget`).
+/// bound for the hardware at its own n1 = Nep1/Ndt1 (`golden::estimator::bounds::n3_error_budget`).
 #[derive(Clone, Copy, Debug)]
 pub struct N3Sample {
     /// Shaft angle, rad.

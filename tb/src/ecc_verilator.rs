@@ -1,14 +1,14 @@
 //! The emitted `encspeed_ecc.v` (core + corrected M/T), compiled by Verilator with
 //! `tb/verilator/ecc_harness.cpp`, in the pattern of [`crate::verilator`]: per-cycle
-//! streaming for cycle-by-cycle comparison with [`golden::ecc_top::EccTopModel`], and an
+//! streaming for cycle-by-cycle comparison with [`golden::top::ecc_top::EccTopModel`], and an
 //! event mode for revolutions of hundreds of millions of cycles. A missing `verilator` is
 //! an error, never a skip: `.ci/run` installs it.
 
 use crate::stream_harness;
 use crate::verilator::{input_line, outputs_of_fields, signed};
-use golden::ecc_top::{EccTopInputs, EccTopOutputs, IDENT_SUM_BITS};
-use golden::ident_gatherer::GatherOutputs;
-use golden::plant::Sample;
+use golden::ecc::ident_gatherer::GatherOutputs;
+use golden::ideal::plant::Sample;
+use golden::top::ecc_top::{EccTopInputs, EccTopOutputs, IDENT_SUM_BITS};
 use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};

@@ -1,7 +1,7 @@
 //! The emitted Verilog replayed in Icarus Verilog against the golden model's outputs,
 //! by the self-checking bench `tb/icarus/replay_tb.v` (a second, independent simulator).
 
-use golden::bittrue::{CoreInputs, CoreOutputs};
+use golden::top::core::{CoreInputs, CoreOutputs};
 use std::process::Command;
 
 const BENCH: &str = include_str!("../icarus/replay_tb.v");

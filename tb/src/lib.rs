@@ -1,7 +1,7 @@
 //! Benches, scenarios and co-simulation for encspeed.
 //!
 //! Every hardware behaviour is checked three ways on the same per-cycle stimuli
-//! ([`golden::bittrue::CoreInputs`]): the bit-true golden model, the rust-hdl simulation
+//! ([`golden::top::core::CoreInputs`]): the bit-true golden model, the rust-hdl simulation
 //! ([`hdl::build_core`]) and the emitted Verilog in Verilator ([`verilator`]).
 
 pub mod accuracy;

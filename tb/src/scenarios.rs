@@ -5,9 +5,9 @@
 //! units of the nominal dt. Each scenario starts at an angle that is not on a line edge, so
 //! the first pulse comes at an arbitrary phase of the dt time base.
 
-use golden::bittrue::CoreInputs;
+use golden::ideal::plant::{PlantError, Profile, Segment};
 use golden::params::Params;
-use golden::plant::{PlantError, Profile, Segment};
+use golden::top::core::CoreInputs;
 
 /// A named shaft motion.
 pub struct Scenario {

@@ -1,9 +1,9 @@
 //! Per-cycle input sequences for the core: from the plant (a shaft motion profile sampled
 //! at the clock) or from random waveforms.
 
-use golden::bittrue::CoreInputs;
+use golden::ideal::plant::{edges, ClockSampler, Disc, PlantError, Profile};
 use golden::params::Params;
-use golden::plant::{edges, ClockSampler, Disc, PlantError, Profile};
+use golden::top::core::CoreInputs;
 
 /// Cycles of reset applied at the start of every plant-driven run.
 pub const RESET_CYCLES: usize = 3;

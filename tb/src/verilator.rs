@@ -6,7 +6,7 @@
 //! an error, never a skip: `.ci/run` installs it.
 
 use crate::stream_harness;
-use golden::bittrue::{CoreInputs, CoreOutputs};
+use golden::top::core::{CoreInputs, CoreOutputs};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

@@ -2,8 +2,8 @@
 //! signal (ports, the synchroniser, the ts counter, Cep, Cdt, Nep1, Ndt1), and read a VCD
 //! back with the `vcd` crate.
 
-use golden::bittrue::{CoreInputs, CoreOutputs};
 use golden::params::Params;
+use golden::top::core::{CoreInputs, CoreOutputs};
 use std::collections::HashMap;
 use std::io::BufWriter;
 use std::path::Path;

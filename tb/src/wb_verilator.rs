@@ -5,8 +5,8 @@
 //! cycle). A missing `verilator` is an error, never a skip: `.ci/run` installs it.
 
 use crate::stream_harness;
-use golden::ecc_wb_top::ECC_WB_TOP_MODULE;
-use golden::wb_top::{WbTopInputs, WbTopOutputs, TOP_MODULE};
+use golden::top::ecc_wb_top::ECC_WB_TOP_MODULE;
+use golden::top::wb_top::{WbTopInputs, WbTopOutputs, TOP_MODULE};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

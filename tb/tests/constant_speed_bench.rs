@@ -3,10 +3,10 @@
 //! configuration input tied low but `cfg_dt`, `speed_n3` read as a real number with
 //! `speed_frac_bits` taken from the manifest. Each reported speed must be within the
 //! computed error budget of the true speed: Rairán's eq. (13) at the measured n1 range, the
-//! clock term of `golden::rairan::n3_error_budget`, and half an output LSB.
+//! clock term of `golden::estimator::bounds::n3_error_budget`, and half an output LSB.
 
-use golden::rairan::n3_error_budget;
-use golden::speed_calc::speed_lsb_error;
+use golden::estimator::bounds::n3_error_budget;
+use golden::estimator::speed_calc::speed_lsb_error;
 use std::path::PathBuf;
 use std::process::Command;
 

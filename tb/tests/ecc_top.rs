@@ -1,5 +1,5 @@
 //! `encspeed_ecc` on the emitted Verilog in Verilator:
-//! - cycle for cycle against its bit-true model (`golden::ecc_top`) on eccentric discs in
+//! - cycle for cycle against its bit-true model (`golden::top::ecc_top`) on eccentric discs in
 //!   x1/x2/x4, forward, backward and through reversals, random and realistic coefficients;
 //! - the once-per-revolution ripple of M/T before (`speed_mt`) and after (`speed_mtc`)
 //!   correction, on the shipped `generated/encspeed_ecc.v`, with the rigid disc at
@@ -8,20 +8,20 @@
 //!   its quantisation budget ([`tb::ecc_ripple`]);
 //! - the same for n3 (`speed_n3`, `speed_n3c`) against Rairán's bound for the hardware;
 //! - the identification the Verilog gathers (armed at the first index) against the disc's
-//!   e and θ0 within `golden::ident_gatherer::error_budget`, equal to the model's, and the
+//!   e and θ0 within `golden::ecc::ident_gatherer::error_budget`, equal to the model's, and the
 //!   whole loop: identify, load the corrector, correct.
 //!
 //! Run with `--nocapture` for the figures of docs/eccentricity-hardware.md; the samples go
 //! to target/ecc-ripple/ (CSV and SVG).
 
-use golden::bittrue::CoreInputs;
-use golden::ecc_delta::coefficients;
-use golden::ecc_top::{check_revolution, disc_inputs, ArmedModel, EccTopInputs};
+use golden::ecc::ecc_delta::coefficients;
 use golden::eccentric::motion::EccentricDisc;
 use golden::eccentric::{Eccentricity, Model};
+use golden::ideal::plant::Profile;
 use golden::params::{Params, Spec};
-use golden::plant::Profile;
-use hdl::ecc_sim::build_ecc;
+use golden::top::core::CoreInputs;
+use golden::top::ecc_top::{check_revolution, disc_inputs, ArmedModel, EccTopInputs};
+use hdl::sim::ecc_sim::build_ecc;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use tb::ecc_ripple::{
@@ -116,7 +116,7 @@ proptest! {
 /// index, as the harness does), streamed: runs of 2·10^8 cycles need no storage.
 struct ModelLog {
     strobes: Vec<EccStrobe>,
-    ident: Vec<(u64, golden::ident_gatherer::GatherOutputs)>,
+    ident: Vec<(u64, golden::ecc::ident_gatherer::GatherOutputs)>,
     first_index: u64,
 }
 

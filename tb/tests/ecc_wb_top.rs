@@ -9,25 +9,25 @@
 //! - with random reads of every offset and harmless writes (unmapped, read-only, interrupt
 //!   registers) between the steps.
 //!
-//! The firmware runs against the cycle model `golden::ecc_wb_top::EccWbTopModel`; its
+//! The firmware runs against the cycle model `golden::top::ecc_wb_top::EccWbTopModel`; its
 //! recorded inputs are then replayed on the rust-hdl top (top outputs, register file and
 //! window outputs, every cycle) and on the emitted Verilog in Verilator (top outputs,
 //! every cycle), so what the firmware read is what the hardware returns. Known answers from
 //! outside the code: the identified e and θ0 against the disc's, within the hand-worked
-//! budget (`golden::ident_gatherer::error_budget`); the gathered count = the lines; the
+//! budget (`golden::ecc::ident_gatherer::error_budget`); the gathered count = the lines; the
 //! corrected M/T speeds read over the bus flat to within the window's clock quantisation
 //! (2/t for a window of t cycles) plus 5 ppm, while the uncorrected ones show the ±e ripple.
 
-use golden::ecc_regmap::{self as m, sum_of_words, ECC_SPEEDS, IDENT_SUMS};
-use golden::ecc_regs::EccRegsOutputs;
-use golden::ecc_wb_top::{EccWbTopModel, ECC_WB_TOP_MODULE};
-use golden::ident_gatherer::GatherOutputs;
+use golden::bus::ecc_regmap::{self as m, sum_of_words, ECC_SPEEDS, IDENT_SUMS};
+use golden::bus::ecc_regs::EccRegsOutputs;
+use golden::bus::regmap;
+use golden::bus::wb_regs::{WbBus, WbRegsOutputs};
+use golden::ecc::ident_gatherer::GatherOutputs;
+use golden::ideal::plant::Sample;
 use golden::params::{Params, Spec};
-use golden::plant::Sample;
-use golden::regmap;
 use golden::splitmix;
-use golden::wb_regs::{WbBus, WbRegsOutputs};
-use golden::wb_top::{WbTopInputs, WbTopOutputs};
+use golden::top::ecc_wb_top::{EccWbTopModel, ECC_WB_TOP_MODULE};
+use golden::top::wb_top::{WbTopInputs, WbTopOutputs};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use tb::ecc_ripple::{Identification, RippleSetup, Stimulus};
@@ -232,14 +232,14 @@ fn firmware(b: &mut Bench, p: &Params, mode: u32, dt: u32, rev_cycles: u64) -> R
         sum_cos: sum_of_words(words[2]),
     };
     // The coefficients of what the hardware gathered, loaded together.
-    let id = golden::ident_gatherer::identify_from_sums(
+    let id = golden::ecc::ident_gatherer::identify_from_sums(
         p.lines(),
         g.sum_t,
         g.sum_sin,
         g.sum_cos,
         golden::eccentric::Model::Rigid,
     );
-    let (c, d) = golden::ecc_delta::coefficients(p.lines(), id.e, id.theta0);
+    let (c, d) = golden::ecc::ecc_delta::coefficients(p.lines(), id.e, id.theta0);
     b.write(m::ECC_C, c as u32);
     b.write(m::ECC_D, d as u32);
     b.write(m::ECC_CTRL, 0b10);
@@ -412,7 +412,7 @@ fn firmware_identifies_loads_and_corrects_on_the_shipped_verilog() {
     check_run(&p, &setup, &b, &run);
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../generated")
-        .join(hdl::emit_wb::ECC_WB_VERILOG_FILE);
+        .join(hdl::emit::wb::ECC_WB_VERILOG_FILE);
     let shipped = std::fs::read_to_string(&path).expect("generated/encspeed_ecc_wb.v");
     replay_verilator(&shipped, &b).unwrap();
     println!("{} cycles identical in Verilator", b.inputs.len());
@@ -424,22 +424,22 @@ fn firmware_identifies_loads_and_corrects_on_the_shipped_verilog() {
 fn shipped_verilog_lints_clean_with_the_documented_waivers() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../generated")
-        .join(hdl::emit_wb::ECC_WB_VERILOG_FILE);
+        .join(hdl::emit::wb::ECC_WB_VERILOG_FILE);
     let shipped = std::fs::read_to_string(&path).expect("generated/encspeed_ecc_wb.v");
     lint_top(&shipped, ECC_WB_TOP_MODULE, &ecc_wb_waivers()).unwrap();
 }
 
 /// The window's C header compiles together with the core's (`gcc -std=c99 -Wall -Wextra
 /// -Werror`, no name clashes), and a C program printing every offset by name and the base
-/// agrees with `golden::ecc_regmap`.
+/// agrees with `golden::bus::ecc_regmap`.
 #[test]
 fn the_c_headers_compile_together_and_agree_with_the_map() {
     let p = Params::new(Spec::default()).unwrap();
     let dir = tb::target_dir().join("ecc_wb_top").join("c_header");
     std::fs::create_dir_all(&dir).unwrap();
-    let files = hdl::emit_wb::emit_wb(&p)
+    let files = hdl::emit::wb::emit_wb(&p)
         .into_iter()
-        .chain(hdl::emit_wb::emit_ecc_wb(&p).unwrap());
+        .chain(hdl::emit::wb::emit_ecc_wb(&p).unwrap());
     for (name, text) in files.filter(|f| f.0.ends_with(".h")) {
         std::fs::write(dir.join(name), text).unwrap();
     }

@@ -8,7 +8,7 @@
 //! 10 r/min. PC, ET, M/T: one configuration too (125 lines x4, 1 MHz, dt = T_s = 1 ms,
 //! 3600 r/min: 30 transitions per T_s, the paper's Figs. 8 and 10).
 
-use golden::freqresp::{BodeSpec, Estimator, Experiment};
+use golden::smallsignal::freqresp::{BodeSpec, Estimator, Experiment};
 use std::f64::consts::PI;
 use tb::freqresp::{draw_svg, measure_on_verilog, verilated_for, BodeFigure};
 

@@ -1,6 +1,6 @@
 //! Fuzzing of the core's invariants on random and adversarial waveforms.
 //!
-//! The golden model (`golden::core::CoreModel`) is enough here: `random_cosim.rs` proves the
+//! The golden model (`golden::top::core::CoreModel`) is enough here: `random_cosim.rs` proves the
 //! rust-hdl simulation and the emitted Verilog equal to it on every cycle of the same kind
 //! of stimuli. Every waveform of every property goes through [`check_trace`], which asserts
 //! on every cycle:
@@ -29,11 +29,11 @@
 //! `first_speeds_after_reset_are_within_budget` (the first speeds after reset came from a
 //! time base that ran from reset, not from a step).
 
-use golden::bittrue::{CoreInputs, CoreModel, CoreOutputs};
-use golden::core::{mode_scale_error_lsb, mode_shift, SYNC_CYCLES};
+use golden::estimator::bounds::n3_error_budget;
+use golden::estimator::speed_calc::latency_cycles;
 use golden::params::{Params, ERROR_COUNT_BITS};
-use golden::rairan::n3_error_budget;
-use golden::speed_calc::latency_cycles;
+use golden::top::core::{mode_scale_error_lsb, mode_shift, SYNC_CYCLES};
+use golden::top::core::{CoreInputs, CoreModel, CoreOutputs};
 use proptest::prelude::*;
 use proptest::test_runner::{FileFailurePersistence, TestRunner};
 use std::cell::{Cell, RefCell};
@@ -192,7 +192,7 @@ fn check_trace(p: &Params, inputs: &[CoreInputs], seen: &mut Seen) -> Vec<CoreOu
             // hold; see `rehold`.)
             assert!(o.glitch_count >= pv.glitch_count, "{}", ctx());
             // The illegal and revolution counts live in the decoder and the position
-            // counter, which the start-up hold resets (documented in `golden::core`; that it
+            // counter, which the start-up hold resets (documented in `golden::top::core`; that it
             // can come back mid-run is the finding of
             // `raising_cfg_filter_mid_run_keeps_position_and_counts`).
             if !hold {
@@ -570,7 +570,7 @@ impl Motion {
 }
 
 /// Cycles from the end of a reset to the first `valid` at a clean constant speed, by the
-/// core's rules (golden::core docs): the start-up hold (2 + max(L, 1) edges); the first
+/// core's rules (golden::top::core docs): the start-up hold (2 + max(L, 1) edges); the first
 /// level change after it (≤ one line, 4·hold cycles) reaches the decoder's step 3 + max(L, 1)
 /// edges later (synchroniser 2, filter max(L, 1), decoder 1) and restarts the estimator
 /// there; the next dt tick comes dt later and the first step after it (≤ one line) primes it
@@ -793,7 +793,7 @@ fn raising_cfg_filter_mid_run_keeps_position_and_counts() {
     s.set_filter(100);
     s.hold(200);
     let inputs = s.finish();
-    let o = golden::bittrue::CoreModel::new(&p);
+    let o = golden::top::core::CoreModel::new(&p);
     let o: Vec<CoreOutputs> = inputs.iter().scan(o, |m, i| Some(m.step(*i))).collect();
     let before = o[t - 1];
     assert_eq!((before.position, before.illegal_count), (10, 1));

@@ -5,16 +5,16 @@
 //! is an exact square wave (pulses on clock edges), so the steady-state answers are exact
 //! and every layer must reproduce them to the cycle:
 //! - the float ideal model in continuous time (`golden::ideal::RairanIdeal`),
-//! - the bit-true golden model (`golden::bittrue::CoreModel`),
+//! - the bit-true golden model (`golden::top::core::CoreModel`),
 //! - the rust-hdl simulation, and the emitted Verilog in Verilator, which must both be
 //!   identical to the golden model on every cycle.
 //!
 //! The second half checks the update interval against the paper's eq. (1) over a grid of
 //! speeds, with the hand-derived interval ⌈r⌉·T as the expected value.
 
-use golden::bittrue::{CoreInputs, CoreModel, CoreOutputs};
 use golden::ideal::RairanIdeal;
 use golden::params::{Params, Spec};
+use golden::top::core::{CoreInputs, CoreModel, CoreOutputs};
 use serde::Deserialize;
 use std::collections::HashMap;
 use tb::cosim::{assert_same, run_golden, run_hdl};
@@ -304,7 +304,7 @@ fn known_answers_in_golden_rust_hdl_and_verilator() {
             "{}: error {err} > Er3 {bound}",
             c.name
         );
-        assert!((golden::rairan::er3_max(n1) - bound).abs() < 1e-15);
+        assert!((golden::estimator::bounds::er3_max(n1) - bound).abs() < 1e-15);
         println!(
             "{:<48} dt {:>4} T {:>4}: Nep1 {:>3} Ndt1 {} strobes/{} writes/{} n3 {:.6} err {:.5} <= Er3 {:.5}; {} cycles identical in 3 layers",
             c.name,

@@ -1,5 +1,5 @@
 //! Property tests: on random stimuli, the rust-hdl simulation and the emitted Verilog (in
-//! Verilator) equal the bit-true golden model (`golden::core::CoreModel`) on every output
+//! Verilator) equal the bit-true golden model (`golden::top::core::CoreModel`) on every output
 //! and every cycle.
 //!
 //! Stimuli:
@@ -23,8 +23,8 @@
 //! with other jobs): 1,501 cases and 3.6 M cycles in 95 s with the builds cached, about
 //! 125 s from a cold cache.
 
-use golden::bittrue::CoreInputs;
 use golden::params::{Params, Spec};
+use golden::top::core::CoreInputs;
 use proptest::prelude::*;
 use proptest::test_runner::{FileFailurePersistence, TestRunner};
 use std::cell::Cell;

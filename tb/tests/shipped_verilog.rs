@@ -4,8 +4,8 @@
 //! `generated/encspeed_ecc.v` is current and synthesises with its tables in block RAM (its
 //! behaviour on the Verilog: tb/tests/ecc_top.rs).
 
-use golden::bittrue::CoreInputs;
 use golden::params::{Params, Spec};
+use golden::top::core::CoreInputs;
 use std::path::PathBuf;
 use std::process::Command;
 use tb::cosim::{assert_same, run_golden};
@@ -47,8 +47,8 @@ fn generated_files_are_up_to_date() {
         "generated/encspeed_ecc.v {stale}"
     );
     // The Wishbone tops and the C headers.
-    let ecc_wb = hdl::emit_wb::emit_ecc_wb(&default_params()).unwrap();
-    for (name, text) in hdl::emit_wb::emit_wb(&default_params())
+    let ecc_wb = hdl::emit::wb::emit_ecc_wb(&default_params()).unwrap();
+    for (name, text) in hdl::emit::wb::emit_wb(&default_params())
         .into_iter()
         .chain(ecc_wb)
     {

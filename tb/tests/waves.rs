@@ -1,8 +1,8 @@
 //! `encspeed simulate` writes a VCD under target/; reading it back with the `vcd` crate
 //! gives, cycle for cycle, the ports and the internal counters of the golden model.
 
-use golden::bittrue::CoreModel;
 use golden::params::{Params, Spec};
+use golden::top::core::CoreModel;
 use std::collections::HashMap;
 
 /// Value of a signal at time `t` from its change list.

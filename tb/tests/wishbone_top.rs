@@ -1,24 +1,24 @@
 //! `encspeed_wb` (the core behind its Wishbone register file) three ways, and as firmware
 //! sees it:
-//! - (a) the cycle model `golden::wb_top::WbTopModel` = the rust-hdl block
+//! - (a) the cycle model `golden::top::wb_top::WbTopModel` = the rust-hdl block
 //!   `hdl::EncspeedWb` (top ports, and the core's and the register file's internal ports)
 //!   = the emitted Verilog in Verilator (top ports), every cycle, on random bus programs
 //!   (configuration writes, W1C, interrupt enable/clear, reads of every register and LO/HI
 //!   pairs, resets) running while the encoder moves (quadrature at rates from 2 to 400
 //!   cycles per step, reversals, stops, glitches);
 //! - (b) a driver written as C firmware would be, with the header's offsets
-//!   (`golden::regmap`): x4 and dt over the bus, poll `STATUS.VALID`, read `SPEED_N3` LO
+//!   (`golden::bus::regmap`): x4 and dt over the bus, poll `STATUS.VALID`, read `SPEED_N3` LO
 //!   then HI (and again after the next `SPEED` interrupt), against the core's own
 //!   `speed_n3`, the hand-computed value and the Rairán budget;
 //! - (c) the generated C header compiled by gcc into a program whose offsets, masks and
-//!   speed decoding agree with `golden::regmap` and with (b);
+//!   speed decoding agree with `golden::bus::regmap` and with (b);
 //! - the emitted `encspeed_wb.v` lints and synthesises; `docs/registers.md` is up to date.
 
-use golden::bittrue::CoreOutputs;
+use golden::bus::regmap::{self, LAYOUT, SPAN_BYTES, SPEEDS};
+use golden::bus::wb_regs::{WbBus, WbRegsOutputs};
 use golden::params::{Params, Spec};
-use golden::regmap::{self, LAYOUT, SPAN_BYTES, SPEEDS};
-use golden::wb_regs::{WbBus, WbRegsOutputs};
-use golden::wb_top::{WbTopInputs, WbTopModel, WbTopOutputs};
+use golden::top::core::CoreOutputs;
+use golden::top::wb_top::{WbTopInputs, WbTopModel, WbTopOutputs};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
 use std::cell::RefCell;
@@ -48,7 +48,7 @@ fn default_params() -> Params {
 fn verilated(p: &Params) -> VerilatedWb {
     static BUILD: Mutex<()> = Mutex::new(());
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
-    let v = &hdl::emit_wb(p)[0].1;
+    let v = &hdl::emit::wb::emit_wb(p)[0].1;
     VerilatedWb::build(v).unwrap()
 }
 
@@ -738,7 +738,7 @@ fn a_driver_configures_x4_and_dt_and_reads_n3_by_hand() {
     // Within the Rairán budget of the true speed, 10 lines per dt.
     let measured = n3 as f64 / f64::from(1u32 << frac);
     let truth = (dt as f64) / (period as f64);
-    let budget = golden::rairan::n3_error_budget(40.0, u64::from(dt));
+    let budget = golden::estimator::bounds::n3_error_budget(40.0, u64::from(dt));
     let rel = (measured / truth - 1.0).abs();
     assert!(rel <= budget, "relative error {rel} > budget {budget}");
     println!(
@@ -780,7 +780,7 @@ fn work_dir(name: &str) -> PathBuf {
 fn the_c_header_compiles_and_a_c_program_agrees_with_the_map() {
     let p = default_params();
     let dir = work_dir("c_header");
-    let files = hdl::emit_wb(&p);
+    let files = hdl::emit::wb::emit_wb(&p);
     let (_, header) = files
         .iter()
         .find(|(n, _)| *n == "encspeed_regs.h")
@@ -875,7 +875,7 @@ fn the_c_header_compiles_and_a_c_program_agrees_with_the_map() {
 #[test]
 fn emitted_files_are_deterministic_and_carry_the_header() {
     let p = default_params();
-    let a = hdl::emit_wb(&p);
+    let a = hdl::emit::wb::emit_wb(&p);
     let names: Vec<&str> = a.iter().map(|(n, _)| *n).collect();
     assert_eq!(names, ["encspeed_wb.v", "encspeed_regs.h"]);
     let v = &a[0].1;
@@ -884,18 +884,18 @@ fn emitted_files_are_deterministic_and_carry_the_header() {
         "// Command: {}\n",
         hdl::emit::regenerate_command(&p)
     )));
-    let ports: Vec<&str> = golden::wb_top::wb_top_ports()
+    let ports: Vec<&str> = golden::top::wb_top::wb_top_ports()
         .iter()
         .map(|p| p.name)
         .collect();
     let module = format!("module encspeed_wb({});", ports.join(","));
     assert!(v.contains(&module), "the ports are {module}");
     assert_eq!(a[1].1, regmap::c_header(&p));
-    let b = hdl::emit_wb(&p);
+    let b = hdl::emit::wb::emit_wb(&p);
     assert!(a == b, "emission is deterministic");
     // write_all writes exactly these files.
     let dir = work_dir("write_all");
-    let paths = hdl::emit_wb::write_all(&p, &dir).unwrap();
+    let paths = hdl::emit::wb::write_all(&p, &dir).unwrap();
     for ((name, text), path) in a.iter().zip(paths) {
         assert_eq!(path, dir.join(name));
         assert_eq!(&std::fs::read_to_string(path).unwrap(), text);
@@ -905,7 +905,7 @@ fn emitted_files_are_deterministic_and_carry_the_header() {
 #[test]
 fn emitted_verilog_lints_clean_with_the_documented_waivers() {
     for p in [default_params(), small()] {
-        tb::wb_verilator::lint(&hdl::emit_wb(&p)[0].1).unwrap();
+        tb::wb_verilator::lint(&hdl::emit::wb::emit_wb(&p)[0].1).unwrap();
     }
 }
 
@@ -913,7 +913,7 @@ fn emitted_verilog_lints_clean_with_the_documented_waivers() {
 fn emitted_verilog_synthesises_for_ice40_without_latches() {
     let dir = work_dir("yosys");
     let v = dir.join("encspeed_wb.v");
-    std::fs::write(&v, &hdl::emit_wb(&default_params())[0].1).unwrap();
+    std::fs::write(&v, &hdl::emit::wb::emit_wb(&default_params())[0].1).unwrap();
     let out = Command::new("yosys")
         .arg("-p")
         .arg(format!(
@@ -961,13 +961,13 @@ fn emitted_verilog_synthesises_for_ice40_without_latches() {
 // docs/registers.md
 // ---------------------------------------------------------------------------------------
 
-/// `docs/registers.md` is what `hdl::emit_wb::default_registers_markdown` writes. To
+/// `docs/registers.md` is what `hdl::emit::wb::default_registers_markdown` writes. To
 /// regenerate it: `ENCSPEED_REGENERATE_DOCS=1 cargo test --release -p encspeed-tb --test
 /// wishbone_top registers_doc` (or the CLI's `generate`, once it writes it).
 #[test]
 fn registers_doc_is_up_to_date() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs/registers.md");
-    let want = hdl::emit_wb::default_registers_markdown();
+    let want = hdl::emit::wb::default_registers_markdown();
     if std::env::var_os("ENCSPEED_REGENERATE_DOCS").is_some() {
         std::fs::write(&path, &want).unwrap();
     }

@@ -8,7 +8,7 @@
 //    speed_strobe speed_pc speed_et speed_mt baseline_strobe valid stalled fault_illegal
 //    fault_overspeed fault_revolution cfg_error glitch_count illegal_count rev_error_count
 //    speed_position speed_nep speed_ndt mt_strobe mt_m mt_t mt_negative dt_active"
-// exactly as golden::core::CoreModel::step does, so the Rust side compares line by line.
+// exactly as golden::top::core::CoreModel::step does, so the Rust side compares line by line.
 //
 // Bench mode: "--bench CYCLES PERIOD DT" drives x1 quadrature (A, and B a quarter period
 // behind) of PERIOD cycles with cfg_dt = DT for CYCLES cycles and prints "cycles seconds

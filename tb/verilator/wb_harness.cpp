@@ -6,7 +6,7 @@
 // (all decimal), applies the inputs, gives one rising clock edge, and prints the outputs
 // after the edge,
 //   "wb_ack_o wb_dat_o irq"
-// exactly as golden::wb_top::WbTopModel::step does, so the Rust side compares line by line.
+// exactly as golden::top::wb_top::WbTopModel::step does, so the Rust side compares line by line.
 //
 // Optional "--vcd PATH" writes a VCD of every signal of the emitted Verilog.
 #include "Vencspeed_wb.h"

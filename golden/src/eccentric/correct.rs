@@ -185,7 +185,7 @@ pub fn line_period_speeds(line_times: &[(i64, f64)], corr: &Correction) -> Vec<S
         .collect()
 }
 
-/// Exact-time M/T on a free-running grid of period `dt` (s), as in [`crate::mt`]: at each
+/// Exact-time M/T on a free-running grid of period `dt` (s), as in [`crate::ideal::mt`]: at each
 /// sample k·dt the estimate spans from the last line crossed before the previous estimate
 /// to the last line crossed before this sample, with the exact time between them; samples
 /// with no new line give no estimate.

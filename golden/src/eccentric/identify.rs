@@ -16,7 +16,7 @@
 //!   optionally with a linear trend.
 
 use super::{EccError, Model};
-use crate::plant::{Channel, Edge};
+use crate::ideal::plant::{Channel, Edge};
 use std::f64::consts::{PI, TAU};
 
 /// An identified eccentricity.

@@ -4,7 +4,7 @@
 //!
 //! # Conventions
 //! Angles in this module are in radians unless a name says otherwise (the plant's
-//! [`crate::plant::Profile`] gives the shaft angle in revolutions; [`motion`] converts).
+//! [`crate::ideal::plant::Profile`] gives the shaft angle in revolutions; [`motion`] converts).
 //! - θ: shaft angle (rad), the quantity every estimator is meant to measure.
 //! - e = ΔR/R: relative eccentricity (disc centre ΔR off the shaft, head at radius R).
 //! - θ0: eccentricity phase (rad); ψ = θ + θ0 is the shaft phase.

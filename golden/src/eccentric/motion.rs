@@ -4,14 +4,14 @@
 //! [`Eccentricity::apparent_angle`] and θ(t) the shaft angle of a [`ShaftMotion`]. φ is
 //! strictly increasing in θ for e < 1 (its slope is the rate, ≥ 1 − e for Zhao and
 //! ≥ 1/(1 + e) for the rigid disc), so x(t) is monotone wherever θ(t) is, and the edges
-//! follow [`crate::plant`]'s conventions exactly: A high iff frac(x) ∈ [0, ½), B high iff
+//! follow [`crate::ideal::plant`]'s conventions exactly: A high iff frac(x) ∈ [0, ½), B high iff
 //! frac(x) ∈ [¼, ¾), Z high iff (x mod K) ∈ [¼, ½); every level changes at a quarter line
 //! q = m/4, and an edge instant t is the first float at which the new level holds. The
-//! output is the plant's [`Edge`] list, so [`crate::plant::pulse_times`],
-//! [`crate::plant::ClockSampler`] and every estimator take it unchanged.
+//! output is the plant's [`Edge`] list, so [`crate::ideal::plant::pulse_times`],
+//! [`crate::ideal::plant::ClockSampler`] and every estimator take it unchanged.
 
 use super::{EccError, Eccentricity};
-use crate::plant::{Channel, Disc, Edge, Profile, Sample};
+use crate::ideal::plant::{Channel, Disc, Edge, Profile, Sample};
 use crate::splitmix::SplitMix64;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
@@ -231,7 +231,7 @@ impl EccentricDisc {
 
     /// Every quarter-line crossing over the motion, in time order. Each monotone piece
     /// from x0 to x1 crosses the levels q with x0 < q ≤ x1 (forward) or x1 < q ≤ x0
-    /// (backward), as in [`crate::plant::edges`]; each instant is found by Newton steps on
+    /// (backward), as in [`crate::ideal::plant::edges`]; each instant is found by Newton steps on
     /// dx/dt and finished by bisection down to adjacent floats.
     pub fn crossings(&self, motion: &impl ShaftMotion) -> Vec<Crossing> {
         let mut cuts = vec![0.0];
@@ -278,7 +278,7 @@ impl EccentricDisc {
 
     /// The A/B/Z levels at t = 0 and every change as a clock of `clock_hz` samples them:
     /// (k, levels from cycle k on), cycle k sampling t_k = k/clock_hz, an edge at t being
-    /// seen from the first t_k ≥ t (as [`crate::plant::ClockSampler`]); edges in the same
+    /// seen from the first t_k ≥ t (as [`crate::ideal::plant::ClockSampler`]); edges in the same
     /// cycle are merged. The compact form of a long run (a revolution at 30 r/min is
     /// 2·10^8 cycles at 100 MHz).
     pub fn clock_changes(
@@ -318,7 +318,7 @@ impl EccentricDisc {
 }
 
 /// The A/B/Z edges of a list of quarter-line crossings on a disc of `lines` lines, with
-/// the polarities of [`crate::plant::edges`]: forward by quarter m ≡ 0 A↑, 1 B↑, 2 A↓,
+/// the polarities of [`crate::ideal::plant::edges`]: forward by quarter m ≡ 0 A↑, 1 B↑, 2 A↓,
 /// 3 B↓ (backward inverts), Z rising at m ≡ 1 and falling at m ≡ 2 (mod 4K) forwards.
 pub fn edges_of(crossings: &[Crossing], lines: u32) -> Vec<Edge> {
     let zperiod = 4 * i64::from(lines);

@@ -27,6 +27,7 @@
 
 mod bode;
 mod factor;
+pub mod freqresp;
 mod model;
 mod operating_point;
 

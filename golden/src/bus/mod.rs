@@ -1,0 +1,6 @@
+//! Register maps as data and the cycle models of the Wishbone register files.
+
+pub mod ecc_regmap;
+pub mod ecc_regs;
+pub mod regmap;
+pub mod wb_regs;

@@ -1,0 +1,591 @@
+//! Cycle model of the Wishbone register file of `encspeed_core` (the block
+//! `hdl::WbRegs`): bus signals and the core's status outputs in, bus outputs and the
+//! core's configuration inputs out. The register map, the bus protocol, coherence, faults
+//! and interrupts are specified in [`crate::bus::regmap`]; this model implements that text.
+//!
+//! Conventions as in [`crate::estimator::sync_estimator`]: one [`WbRegsModel::step`] per rising clock edge
+//! with the inputs applied during the cycle before it; every register is updated from the
+//! values before the edge; `step` returns the outputs after the edge. Every output is a
+//! register or a function of registers only. Per edge, when `reset` is low:
+//! - request = `wb_cyc_i & wb_stb_i & !wb_ack_o`; `wb_ack_o` ← request;
+//!   `wb_dat_o` ← the register at `wb_adr_i` (bits 1:0 ignored) if the request reads, else 0;
+//! - a read of a speed's LO register loads that speed's HI shadow with bits 63:32 of the
+//!   speed sign-extended from S to 64 bits;
+//! - a write stores `(old & !lanes) | (wb_dat_i & lanes)` in the RW bits of the register
+//!   (`lanes` = the byte lanes of `wb_sel_i`); W1C bits: `wb_dat_i & lanes` are the bits
+//!   written 1;
+//! - `clear_faults` ← a write to `STATUS` with a 1 written to a fault bit;
+//! - `IRQ_STATUS` ← (`IRQ_STATUS` & !(bits written 1)) | events, the events being the
+//!   strobes `speed_strobe`, `baseline_strobe`, `index`, `update` and the rising edges of
+//!   (any) fault flag and of `stalled` (previous levels registered, 0 after reset).
+
+use crate::bus::regmap::{
+    self, Access, MapParams, RegMap, CTRL_MODE_LSB, CTRL_Z_MODE_LSB, SPAN_BYTES, SPEEDS,
+};
+use crate::params::Params;
+
+/// The Wishbone inputs of the register file, named as its ports.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WbBus {
+    /// Bus cycle in progress.
+    pub wb_cyc_i: bool,
+    /// This slave is addressed.
+    pub wb_stb_i: bool,
+    /// 1 write, 0 read.
+    pub wb_we_i: bool,
+    /// Byte address ([`regmap::ADDR_BITS`] bits; bits 1:0 ignored).
+    pub wb_adr_i: u32,
+    /// Write data.
+    pub wb_dat_i: u32,
+    /// Byte lanes written (4 bits).
+    pub wb_sel_i: u8,
+}
+
+/// The core's outputs that the register file reads, named as its ports. Values are the
+/// ports' bit patterns: unsigned, and the speeds as S-bit two's complement (`raw`, as
+/// [`crate::estimator::speed_calc::SpeedFormat::to_raw`] gives them).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub struct CoreStatus {
+    pub position: u64,
+    pub z_latch: u64,
+    pub index: bool,
+    pub direction: bool,
+    pub nep: u64,
+    pub ndt: u64,
+    pub update: bool,
+    pub speed_n1: u64,
+    pub speed_n2: u64,
+    pub speed_n3: u64,
+    pub speed_strobe: bool,
+    pub speed_pc: u64,
+    pub speed_et: u64,
+    pub speed_mt: u64,
+    pub baseline_strobe: bool,
+    pub valid: bool,
+    pub stalled: bool,
+    pub fault_illegal: bool,
+    pub fault_overspeed: bool,
+    pub fault_revolution: bool,
+    pub cfg_error: bool,
+    pub glitch_count: u64,
+    pub illegal_count: u64,
+    pub rev_error_count: u64,
+}
+
+impl CoreStatus {
+    /// The six speeds in the order of [`SPEEDS`].
+    pub fn speeds(&self) -> [u64; 6] {
+        [
+            self.speed_n1,
+            self.speed_n2,
+            self.speed_n3,
+            self.speed_pc,
+            self.speed_et,
+            self.speed_mt,
+        ]
+    }
+}
+
+/// Inputs of one clock cycle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WbRegsInputs {
+    /// Synchronous active-high reset.
+    pub reset: bool,
+    /// Wishbone inputs.
+    pub bus: WbBus,
+    /// The core's status outputs.
+    pub status: CoreStatus,
+}
+
+/// Outputs after a clock edge, named as the ports.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WbRegsOutputs {
+    /// Acknowledge (one cycle per access).
+    pub wb_ack_o: bool,
+    /// Read data (0 unless `wb_ack_o` of a read).
+    pub wb_dat_o: u32,
+    /// Interrupt request, level.
+    pub irq: bool,
+    /// `CFG_DT`.
+    pub cfg_dt: u64,
+    /// `CFG_TIMEOUT`.
+    pub cfg_timeout: u64,
+    /// `CFG_FILTER`.
+    pub cfg_filter: u64,
+    /// `CTRL.MODE`.
+    pub cfg_mode: u8,
+    /// `CTRL.Z_MODE`.
+    pub cfg_z_mode: u8,
+    /// One cycle: clear the core's sticky faults.
+    pub clear_faults: bool,
+}
+
+/// Registers of the file.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct State {
+    ack: bool,
+    dat: u32,
+    ctrl: u32,
+    cfg_dt: u32,
+    cfg_timeout: u32,
+    cfg_filter: u32,
+    irq_enable: u32,
+    irq_status: u32,
+    hi: [u32; 6],
+    clear: bool,
+    /// fault_illegal, fault_overspeed, fault_revolution before the last edge.
+    prev_faults: [bool; 3],
+    prev_stalled: bool,
+}
+
+/// The register file, one step per clock edge.
+#[derive(Clone, Debug)]
+pub struct WbRegsModel {
+    map: RegMap,
+    s: State,
+}
+
+/// The 32-bit mask of the byte lanes in `sel`.
+pub fn lane_mask(sel: u8) -> u32 {
+    (0..4)
+        .filter(|j| sel & (1 << j) != 0)
+        .fold(0, |m, j| m | (0xFF << (8 * j)))
+}
+
+/// A bus access as a classic slave decodes it at an edge: a request is
+/// `wb_cyc_i & wb_stb_i` while its `wb_ack_o` is low.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Request {
+    /// Word offset (`wb_adr_i` with bits 1:0 cleared).
+    pub off: u32,
+    /// A read request.
+    pub rd: bool,
+    /// A write request.
+    pub wr: bool,
+    /// The written byte lanes as a 32-bit mask.
+    pub lanes: u32,
+    /// `wb_dat_i` in those lanes: the bits written 1.
+    pub ones: u32,
+}
+
+impl Request {
+    /// The access of `b` for a slave whose `wb_ack_o` is `ack`. Panics if the address does
+    /// not fit `wb_adr_i` or `wb_sel_i` is wider than 4 bits.
+    pub fn decode(b: &WbBus, ack: bool) -> Request {
+        assert!(b.wb_adr_i < SPAN_BYTES, "wb_adr_i = {:#x}", b.wb_adr_i);
+        assert!(b.wb_sel_i < 16, "wb_sel_i = {:#x}", b.wb_sel_i);
+        let req = b.wb_cyc_i && b.wb_stb_i && !ack;
+        let lanes = lane_mask(b.wb_sel_i);
+        Request {
+            off: b.wb_adr_i & !3,
+            rd: req && !b.wb_we_i,
+            wr: req && b.wb_we_i,
+            lanes,
+            ones: b.wb_dat_i & lanes,
+        }
+    }
+}
+
+/// `raw` (S bits, two's complement) sign-extended to 64 bits.
+pub fn sign_extend(raw: u64, s: u32) -> u64 {
+    if raw & (1 << (s - 1)) != 0 {
+        raw | !((1u64 << s) - 1)
+    } else {
+        raw
+    }
+}
+
+impl WbRegsModel {
+    /// The register file of `p`, in its reset state.
+    pub fn new(p: &Params) -> WbRegsModel {
+        WbRegsModel::from_map(RegMap::new(p))
+    }
+
+    /// The register file of `map` (e.g. [`RegMap::from_map_params`]), in its reset state.
+    pub fn from_map(map: RegMap) -> WbRegsModel {
+        WbRegsModel {
+            map,
+            s: State::default(),
+        }
+    }
+
+    /// The register map.
+    pub fn map(&self) -> &RegMap {
+        &self.map
+    }
+
+    fn mp(&self) -> &MapParams {
+        self.map.params()
+    }
+
+    /// The outputs as they stand.
+    pub fn outputs(&self) -> WbRegsOutputs {
+        let s = &self.s;
+        WbRegsOutputs {
+            wb_ack_o: s.ack,
+            wb_dat_o: s.dat,
+            irq: s.irq_status & s.irq_enable != 0,
+            cfg_dt: u64::from(s.cfg_dt),
+            cfg_timeout: u64::from(s.cfg_timeout),
+            cfg_filter: u64::from(s.cfg_filter),
+            cfg_mode: ((s.ctrl >> CTRL_MODE_LSB) & 3) as u8,
+            cfg_z_mode: ((s.ctrl >> CTRL_Z_MODE_LSB) & 3) as u8,
+            clear_faults: s.clear,
+        }
+    }
+
+    fn check(&self, st: &CoreStatus) {
+        let mp = self.mp();
+        let fits = |v: u64, bits: u32, what: &str| {
+            assert!(v >> bits == 0, "{what} = {v:#x} does not fit {bits} bits");
+        };
+        fits(st.position, mp.position_bits, "position");
+        fits(st.z_latch, mp.position_bits, "z_latch");
+        fits(st.nep, mp.counter_bits, "nep");
+        fits(st.ndt, mp.counter_bits, "ndt");
+        for (v, (_, _, port)) in st.speeds().into_iter().zip(SPEEDS) {
+            fits(v, mp.speed_bits(), port);
+        }
+        fits(st.glitch_count, mp.error_count_bits, "glitch_count");
+        fits(st.illegal_count, mp.error_count_bits, "illegal_count");
+        fits(st.rev_error_count, mp.error_count_bits, "rev_error_count");
+    }
+
+    /// The value a read of byte offset `off` (word aligned) returns with status `st`.
+    fn read(&self, off: u32, st: &CoreStatus) -> u32 {
+        let s = &self.s;
+        let m = &self.map;
+        let bit = |b: bool, field: &str| if b { m.mask("STATUS", field) } else { 0 };
+        if let Some(k) = SPEEDS.iter().position(|e| e.0 == off) {
+            return sign_extend(st.speeds()[k], self.mp().speed_bits()) as u32;
+        }
+        if let Some(k) = SPEEDS.iter().position(|e| e.1 == off) {
+            return s.hi[k];
+        }
+        match off {
+            regmap::ID
+            | regmap::VERSION
+            | regmap::PARAM0
+            | regmap::PARAM1
+            | regmap::LINES
+            | regmap::DT_DEFAULT
+            | regmap::TIMEOUT_DEFAULT
+            | regmap::CLOCK_HZ => m.at(off).unwrap().reset.unwrap(),
+            regmap::CTRL => s.ctrl,
+            regmap::CFG_DT => s.cfg_dt,
+            regmap::CFG_TIMEOUT => s.cfg_timeout,
+            regmap::CFG_FILTER => s.cfg_filter,
+            regmap::STATUS => {
+                bit(st.valid, "VALID")
+                    | bit(st.stalled, "STALLED")
+                    | bit(st.direction, "DIRECTION")
+                    | bit(st.cfg_error, "CFG_ERROR")
+                    | bit(st.fault_illegal, "FAULT_ILLEGAL")
+                    | bit(st.fault_overspeed, "FAULT_OVERSPEED")
+                    | bit(st.fault_revolution, "FAULT_REVOLUTION")
+            }
+            regmap::IRQ_ENABLE => s.irq_enable,
+            regmap::IRQ_STATUS => s.irq_status,
+            regmap::POSITION => st.position as u32,
+            regmap::Z_LATCH => st.z_latch as u32,
+            regmap::NEP => st.nep as u32,
+            regmap::NDT => st.ndt as u32,
+            regmap::GLITCH_COUNT => st.glitch_count as u32,
+            regmap::ILLEGAL_COUNT => st.illegal_count as u32,
+            regmap::REV_ERROR_COUNT => st.rev_error_count as u32,
+            _ => 0,
+        }
+    }
+
+    /// One rising clock edge with `inp` applied; the outputs after it. Panics if a status
+    /// value does not fit its port or the address does not fit `wb_adr_i`.
+    pub fn step(&mut self, inp: &WbRegsInputs) -> WbRegsOutputs {
+        let st = &inp.status;
+        let b = &inp.bus;
+        self.check(st);
+        let Request {
+            off,
+            rd,
+            wr,
+            lanes,
+            ones,
+        } = Request::decode(b, self.s.ack);
+        if inp.reset {
+            self.s = State::default();
+            return self.outputs();
+        }
+        let s = self.s;
+        let mut n = s;
+        n.ack = rd || wr;
+        n.dat = if rd { self.read(off, st) } else { 0 };
+        if rd {
+            if let Some(k) = SPEEDS.iter().position(|e| e.0 == off) {
+                n.hi[k] = (sign_extend(st.speeds()[k], self.mp().speed_bits()) >> 32) as u32;
+            }
+        }
+        let rw = |name: &str, old: u32| {
+            let mask = self.map.reg(name).mask_of(Access::Rw);
+            ((old & !lanes) | ones) & mask
+        };
+        let mut irq_cleared = 0;
+        n.clear = false;
+        if wr {
+            match off {
+                regmap::CTRL => n.ctrl = rw("CTRL", s.ctrl),
+                regmap::CFG_DT => n.cfg_dt = rw("CFG_DT", s.cfg_dt),
+                regmap::CFG_TIMEOUT => n.cfg_timeout = rw("CFG_TIMEOUT", s.cfg_timeout),
+                regmap::CFG_FILTER => n.cfg_filter = rw("CFG_FILTER", s.cfg_filter),
+                regmap::IRQ_ENABLE => n.irq_enable = rw("IRQ_ENABLE", s.irq_enable),
+                regmap::IRQ_STATUS => {
+                    irq_cleared = ones & self.map.reg("IRQ_STATUS").mask_of(Access::W1c)
+                }
+                regmap::STATUS => n.clear = ones & self.map.reg("STATUS").mask_of(Access::W1c) != 0,
+                _ => {}
+            }
+        }
+        let faults = [st.fault_illegal, st.fault_overspeed, st.fault_revolution];
+        let fault_rose = faults.iter().zip(s.prev_faults).any(|(&f, p)| f && !p);
+        let ev = |b: bool, field: &str| {
+            if b {
+                self.map.mask("IRQ_STATUS", field)
+            } else {
+                0
+            }
+        };
+        let events = ev(st.speed_strobe, "SPEED")
+            | ev(st.baseline_strobe, "BASELINE")
+            | ev(st.index, "INDEX")
+            | ev(fault_rose, "FAULT")
+            | ev(st.update, "UPDATE")
+            | ev(st.stalled && !s.prev_stalled, "STALL");
+        n.irq_status = (s.irq_status & !irq_cleared) | events;
+        n.prev_faults = faults;
+        n.prev_stalled = st.stalled;
+        self.s = n;
+        self.outputs()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bus::regmap::*;
+    use crate::params::Spec;
+
+    fn model() -> WbRegsModel {
+        WbRegsModel::new(&Params::new(Spec::default()).unwrap())
+    }
+
+    /// A classic master: hold the request until `wb_ack_o`, then one idle cycle. Returns the
+    /// data and the outputs of the ack cycle.
+    fn access(
+        m: &mut WbRegsModel,
+        st: &CoreStatus,
+        we: bool,
+        adr: u32,
+        dat: u32,
+        sel: u8,
+    ) -> (u32, WbRegsOutputs) {
+        let bus = WbBus {
+            wb_cyc_i: true,
+            wb_stb_i: true,
+            wb_we_i: we,
+            wb_adr_i: adr,
+            wb_dat_i: dat,
+            wb_sel_i: sel,
+        };
+        let o = m.step(&WbRegsInputs {
+            reset: false,
+            bus,
+            status: *st,
+        });
+        assert!(o.wb_ack_o, "ack in the cycle after the request");
+        let idle = m.step(&WbRegsInputs {
+            status: *st,
+            ..Default::default()
+        });
+        assert!(!idle.wb_ack_o && idle.wb_dat_o == 0);
+        (o.wb_dat_o, o)
+    }
+
+    fn read(m: &mut WbRegsModel, st: &CoreStatus, adr: u32) -> u32 {
+        access(m, st, false, adr, 0, 0).0
+    }
+
+    fn write(m: &mut WbRegsModel, st: &CoreStatus, adr: u32, dat: u32, sel: u8) -> WbRegsOutputs {
+        access(m, st, true, adr, dat, sel).1
+    }
+
+    #[test]
+    fn a_held_request_is_acked_every_other_cycle() {
+        let mut m = model();
+        let inp = WbRegsInputs {
+            bus: WbBus {
+                wb_cyc_i: true,
+                wb_stb_i: true,
+                wb_adr_i: ID,
+                ..Default::default()
+            },
+            ..Default::default()
+        };
+        for k in 0..6 {
+            let o = m.step(&inp);
+            assert_eq!(o.wb_ack_o, k % 2 == 0, "edge {k}");
+            assert_eq!(o.wb_dat_o, if k % 2 == 0 { ID_MAGIC } else { 0 });
+        }
+        // No cyc: no request.
+        let o = m.step(&WbRegsInputs {
+            bus: WbBus {
+                wb_cyc_i: false,
+                ..inp.bus
+            },
+            ..inp
+        });
+        assert!(!o.wb_ack_o);
+    }
+
+    #[test]
+    fn constants_read_as_the_map_and_ignore_writes_unmapped_reads_zero() {
+        let mut m = model();
+        let st = CoreStatus::default();
+        let map = m.map().clone();
+        for r in map.registers() {
+            if r.name.starts_with("SPEED") || r.mask_of(Access::Ro) == 0 {
+                continue;
+            }
+            if let (Some(v), true) = (r.reset, r.mask_of(Access::Rw) == 0) {
+                write(&mut m, &st, r.offset, !v, 0xF);
+                assert_eq!(read(&mut m, &st, r.offset), v, "{}", r.name);
+            }
+        }
+        for off in [0x3C, 0x8C, 0xFC] {
+            write(&mut m, &st, off, u32::MAX, 0xF);
+            assert_eq!(read(&mut m, &st, off), 0);
+        }
+        assert_eq!(read(&mut m, &st, ID + 3), ID_MAGIC, "bits 1:0 ignored");
+    }
+
+    #[test]
+    fn rw_registers_honour_byte_lanes_and_width() {
+        let mut m = model();
+        let st = CoreStatus::default();
+        let n = m.map().params().counter_bits;
+        write(&mut m, &st, CFG_DT, 0xFFFF_FFFF, 0b0101);
+        let want = 0x00FF_00FF & ((1u64 << n) - 1) as u32;
+        assert_eq!(read(&mut m, &st, CFG_DT), want);
+        let o = write(&mut m, &st, CTRL, 0xFFFF_FF06, 0b0001);
+        // MODE = 2 (x4), Z_MODE = 1.
+        assert_eq!((o.cfg_mode, o.cfg_z_mode), (2, 1));
+        assert_eq!(read(&mut m, &st, CTRL), 0x6);
+        write(&mut m, &st, CTRL, 0, 0b1110);
+        assert_eq!(read(&mut m, &st, CTRL), 0x6, "lane 0 not selected");
+        assert_eq!(m.outputs().cfg_dt, u64::from(want));
+        // Reset clears them.
+        m.step(&WbRegsInputs {
+            reset: true,
+            ..Default::default()
+        });
+        assert_eq!(m.outputs(), WbRegsOutputs::default());
+    }
+
+    #[test]
+    fn lo_then_hi_is_coherent_while_the_speed_changes() {
+        let mut m = model();
+        let s_bits = m.map().params().speed_bits();
+        let raw = |v: i64| (v as u64) & ((1u64 << s_bits) - 1);
+        let mut st = CoreStatus {
+            speed_n3: raw(-5_000_000_000),
+            ..Default::default()
+        };
+        assert_eq!(read(&mut m, &st, SPEED_N3_HI), 0, "shadow reset value");
+        let lo = read(&mut m, &st, SPEED_N3_LO);
+        st.speed_n3 = raw(7);
+        let hi = read(&mut m, &st, SPEED_N3_HI);
+        assert_eq!(
+            ((u64::from(hi) << 32) | u64::from(lo)) as i64,
+            -5_000_000_000
+        );
+        assert_eq!(read(&mut m, &st, SPEED_N3_LO), 7);
+        assert_eq!(read(&mut m, &st, SPEED_N3_HI), 0);
+        assert_eq!(read(&mut m, &st, SPEED_N1_HI), 0, "own shadow per speed");
+    }
+
+    #[test]
+    fn a_one_written_to_any_fault_bit_pulses_clear_faults_once() {
+        let mut m = model();
+        let st = CoreStatus {
+            fault_overspeed: true,
+            valid: true,
+            ..Default::default()
+        };
+        assert_eq!(read(&mut m, &st, STATUS), 0x21);
+        let o = write(&mut m, &st, STATUS, 0x10, 0x1);
+        assert!(o.clear_faults, "in the ack cycle");
+        assert!(!m.outputs().clear_faults, "one cycle");
+        for (dat, sel) in [(0x0F, 0x1), (0x70, 0xE), (0xFFFF_FF8F, 0xF)] {
+            let o = write(&mut m, &st, STATUS, dat, sel);
+            assert!(!o.clear_faults, "{dat:#x} {sel:#x}");
+        }
+    }
+
+    #[test]
+    fn interrupts_latch_events_clear_by_w1c_and_an_event_wins() {
+        let mut m = model();
+        let mut st = CoreStatus::default();
+        let idle = |m: &mut WbRegsModel, st: &CoreStatus| {
+            m.step(&WbRegsInputs {
+                status: *st,
+                ..Default::default()
+            })
+        };
+        st.index = true;
+        let o = idle(&mut m, &st);
+        assert!(!o.irq, "not enabled");
+        st.index = false;
+        write(&mut m, &st, IRQ_ENABLE, 0x3F, 0xF);
+        assert!(m.outputs().irq);
+        assert_eq!(read(&mut m, &st, IRQ_STATUS), 0x4);
+        // A fault rising and stalled rising: FAULT and STALL; a level held is not an event.
+        st.fault_revolution = true;
+        st.stalled = true;
+        idle(&mut m, &st);
+        assert_eq!(read(&mut m, &st, IRQ_STATUS), 0x4 | 0x8 | 0x20);
+        write(&mut m, &st, IRQ_STATUS, 0x2C, 0xF);
+        assert_eq!(read(&mut m, &st, IRQ_STATUS), 0);
+        assert!(!m.outputs().irq);
+        // Clear and event at the same edge: the event wins.
+        st.speed_strobe = true;
+        let o = write(&mut m, &st, IRQ_STATUS, 0x1, 0xF);
+        assert!(o.irq);
+        st.speed_strobe = false;
+        assert_eq!(read(&mut m, &st, IRQ_STATUS), 0x1);
+    }
+
+    #[test]
+    fn a_request_during_reset_is_dropped() {
+        let mut m = model();
+        let bus = WbBus {
+            wb_cyc_i: true,
+            wb_stb_i: true,
+            wb_we_i: true,
+            wb_adr_i: CFG_DT,
+            wb_dat_i: 9,
+            wb_sel_i: 0xF,
+        };
+        let o = m.step(&WbRegsInputs {
+            reset: true,
+            bus,
+            ..Default::default()
+        });
+        assert!(!o.wb_ack_o);
+        assert_eq!(o.cfg_dt, 0);
+    }
+
+    #[test]
+    fn sign_extension_and_lanes_by_hand() {
+        assert_eq!(sign_extend(0x400, 11), 0xFFFF_FFFF_FFFF_FC00);
+        assert_eq!(sign_extend(0x3FF, 11), 0x3FF);
+        assert_eq!(lane_mask(0b1010), 0xFF00_FF00);
+    }
+}

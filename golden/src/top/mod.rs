@@ -1,0 +1,7 @@
+//! Bit-true models of the shipped tops, and their ports.
+
+pub mod core;
+pub mod ecc_top;
+pub mod ecc_wb_top;
+pub mod ports;
+pub mod wb_top;

@@ -1,0 +1,140 @@
+//! The ports of `encspeed_core`, as one description: the emitted Verilog's header, the
+//! manifest and docs/ports.md are all written from [`core_ports`], and the latencies from
+//! [`Latency`].
+
+use crate::estimator::speed_calc;
+use crate::params::{Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
+use serde::Serialize;
+
+/// One port of `encspeed_core`.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Port {
+    /// Verilog name.
+    pub name: &'static str,
+    /// "input" or "output".
+    pub direction: &'static str,
+    /// Width in bits.
+    pub width: u32,
+    /// Meaning, unit and timing.
+    pub description: &'static str,
+}
+
+/// Every port of `encspeed_core` for `p`, in Verilog order of importance (clock first).
+pub fn core_ports(p: &Params) -> Vec<Port> {
+    let n = p.counter_bits();
+    let s = p.speed_bits();
+    let g = ERROR_COUNT_BITS;
+    let port = |name, direction, width, description| Port {
+        name,
+        direction,
+        width,
+        description,
+    };
+    let i = |name, width, d| port(name, "input", width, d);
+    let o = |name, width, d| port(name, "output", width, d);
+    vec![
+        i("clock", 1, "core clock; everything happens at its rising edge"),
+        i("reset", 1, "synchronous, active high; hold it for at least one edge"),
+        i("enc_a", 1, "encoder channel A, asynchronous (two-flop synchronised inside)"),
+        i("enc_b", 1, "encoder channel B, asynchronous; forward = A leads B by 90 degrees"),
+        i("enc_z", 1, "encoder index Z, asynchronous"),
+        i("cfg_dt", n, "dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)"),
+        i("cfg_timeout", n, "zero-speed timeout in dt intervals; 0 = the generation default; registered"),
+        i("cfg_filter", FILTER_BITS, "glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off"),
+        i("cfg_mode", 2, "decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. A change resets the whole core (as reset)"),
+        i("cfg_z_mode", 2, "index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset"),
+        i("clear_faults", 1, "clears fault_illegal, fault_overspeed, fault_revolution (an event in the same cycle wins)"),
+        o("position", POSITION_BITS, "position in decoder steps, 0 .. lines*2^s - 1 (s = 0, 1, 2 in x1, x2, x4); wraps at a revolution, which is its definition"),
+        o("z_latch", POSITION_BITS, "position latched at the last index edge (cfg_z_mode 2, 3)"),
+        o("index", 1, "one cycle: an index edge was processed"),
+        o("direction", 1, "direction of the last step: 1 = forward"),
+        o("nep", n, "Nep1 of Rairan's Table 1, in decoder steps; 0 after reset or a reversal"),
+        o("ndt", n, "Ndt1 of Rairan's Table 1, dt intervals; 1 after reset or a reversal"),
+        o("update", 1, "one cycle: nep or ndt has just been written"),
+        o("speed_n1", s, "Rairan n1 = Nep/Ndt, two's complement, speed_frac_bits fractional bits, units of omega_lim (one line per dt)"),
+        o("speed_n2", s, "Rairan n2, eq. (6); format as speed_n1"),
+        o("speed_n3", s, "Rairan n3, eq. (11): the estimate to use; format as speed_n1; negative = backward"),
+        o("speed_strobe", 1, "one cycle: speed_n1, speed_n2, speed_n3 have just been written"),
+        o("speed_pc", s, "fixed-time (pulse count) speed of the last cfg_dt window; format as speed_n1"),
+        o("speed_et", s, "fixed-space (elapsed time) speed dt/period of the last period at the window end; 0 before a period of the current direction; format as speed_n1"),
+        o("speed_mt", s, "M/T speed: steps of the window over the exact clock count spanning them, times dt; 0 for a window without steps; format as speed_n1"),
+        o("baseline_strobe", 1, "one cycle: speed_pc, speed_et, speed_mt have just been written"),
+        o("valid", 1, "speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration"),
+        o("stalled", 1, "no step for the zero-speed timeout: the speed is below one step per timeout"),
+        o("fault_illegal", 1, "sticky: A and B changed between two samples (an illegal transition)"),
+        o("fault_overspeed", 1, "sticky: the A or B filter rejected a level shorter than cfg_filter cycles (a glitch, or edges closer than the filter can pass)"),
+        o("fault_revolution", 1, "sticky: a revolution of one direction between two index edges had a count other than lines*2^s"),
+        o("cfg_error", 1, "cfg_dt = 1 or cfg_mode = 3 at the last edge"),
+        o("glitch_count", g, "pulses rejected by the A, B and Z filters since reset, saturating"),
+        o("illegal_count", g, "illegal transitions since reset, saturating"),
+        o("rev_error_count", g, "revolutions with a wrong count since reset, saturating"),
+        o("speed_position", POSITION_BITS, "with speed_strobe, held: the end of the span of disc the speeds measure: for nep = 1 the position of the restart pulse that wrote ndt, for nep >= 2 that of the last pulse of the window that wrote nep (which started nep - 1 steps before it); for an eccentricity correction; 0 after reset or a reversal"),
+        o("speed_nep", n, "with speed_strobe, held: the nep the speeds were computed from"),
+        o("speed_ndt", n, "with speed_strobe, held: the ndt the speeds were computed from"),
+        o("mt_strobe", 1, "one cycle: the M/T counter closed a window; mt_m, mt_t, mt_negative were just written and position in this cycle is that of the window's last step; speed_mt follows at baseline_strobe"),
+        o("mt_m", n, "M/T: steps of the last window (0: none)"),
+        o("mt_t", n, "M/T: clock cycles from the step before the window's first to its last (mt_m > 0), else cycles since the last step"),
+        o("mt_negative", 1, "M/T: the last window's steps were backward"),
+        o("dt_active", n, "the dt in use, clock cycles: cfg_dt after its default and minimum, registered"),
+    ]
+}
+
+/// Every port of `encspeed_ecc` for `p`: those of `encspeed_core`, then the coefficients,
+/// the corrected speeds and the identification (`crate::top::ecc_top`).
+pub fn ecc_ports(p: &Params) -> Vec<Port> {
+    let s = p.speed_bits();
+    let mut v = core_ports(p);
+    let port = |name, direction, width, description| Port {
+        name,
+        direction,
+        width,
+        description,
+    };
+    v.extend([
+        port("ecc_c", "input", 32, "eccentricity coefficient c = E cos(theta0), two's complement Q15.16 in lines (E = lines * e / 2pi, e = disc centre offset / disc radius); sampled at each mt_strobe and speed_strobe for the correction of that estimate"),
+        port("ecc_d", "input", 32, "eccentricity coefficient d = E sin(theta0), Q15.16 lines"),
+        port("speed_mtc", "output", s, "M/T speed of each window corrected for the eccentricity; format as speed_mt; needs cfg_z_mode = 1 or 3 (position counted from line 0)"),
+        port("mtc_strobe", "output", 1, "one cycle: speed_mtc has just been written"),
+        port("speed_n3c", "output", s, "Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3"),
+        port("n3c_strobe", "output", 1, "one cycle: speed_n3c has just been written"),
+        port("ident_arm", "input", 1, "one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and the revolution after it is gathered; ident_done clears when the arm takes effect"),
+        port("ident_done", "output", 1, "the ident_* results are complete: rises 2 edges after the edge that raised the closing index; sticky until the next arm takes effect"),
+        port("ident_overflow", "output", 1, "more than 2^16 lines between the index pulses (contract broken, extra lines dropped)"),
+        port("ident_count", "output", 17, "forward lines gathered N (lines per revolution for a clean revolution)"),
+        port("ident_t_min", "output", 32, "shortest line period, clock cycles (Zhao's T_min)"),
+        port("ident_p_min", "output", 16, "line number of the edge that closed it (first on ties)"),
+        port("ident_t_max", "output", 32, "longest line period, clock cycles (Zhao's T_max)"),
+        port("ident_p_max", "output", 16, "line number of the edge that closed it (first on ties)"),
+        port("ident_sum_t", "output", 72, "sum of the line periods T, clock cycles (the revolution's length)"),
+        port("ident_sum_sin", "output", 72, "sum of T * round(Q sin(2 pi p / lines)), two's complement, Q = 2^23 - 1, p the line number of the edge closing T"),
+        port("ident_sum_cos", "output", 72, "sum of T * round(Q cos(2 pi p / lines)), two's complement; e and theta0 from the three sums: golden::ecc::ident_gatherer::identify_from_sums (docs/eccentricity-hardware.md)"),
+    ]);
+    v
+}
+
+/// Latencies of `encspeed_core` in clock edges, for a filter length `cfg_filter`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Latency {
+    /// From the edge that first samples a new level of A or B to the edge after which
+    /// `position` and (for a restart) `nep`/`ndt`/`update` show it: 3 + max(L, 1).
+    pub edge_to_position: u32,
+    /// Speed calculator: a start to its result, 3·(N + F + 1) + 5.
+    pub speed_calc: u32,
+    /// From the edge that first samples an A or B edge whose step restarts Table 1 (writes
+    /// Ndt1) to the edge after which `speed_strobe` shows the speeds computed from it:
+    /// edge_to_position + 1 + speed_calc + 1.
+    pub edge_to_speed_strobe: u32,
+}
+
+impl Latency {
+    /// The latencies for `p` and a filter of `cfg_filter` cycles.
+    pub fn new(p: &Params, cfg_filter: u64) -> Latency {
+        let edge_to_position = 3 + cfg_filter.max(1) as u32;
+        let speed_calc = speed_calc::latency_cycles(p.counter_bits(), p.speed_frac_bits());
+        Latency {
+            edge_to_position,
+            speed_calc,
+            edge_to_speed_strobe: edge_to_position + 1 + speed_calc + 1,
+        }
+    }
+}

@@ -1,0 +1,3 @@
+//! Shared sequential arithmetic.
+
+pub mod seq_divider;

@@ -1,0 +1,765 @@
+//! Baseline speeds: the raw results of the three baseline estimators ([`PcCounter`],
+//! [`EtTimer`], [`MtCounter`]) as signed fixed-point speeds in the format of [`SpeedCalc`], by
+//! one sequential shift-add multiplier and one sequential divider. A standalone block; its
+//! bit-true model is [`golden::baselines::baseline_speeds::BaselineSpeedsModel`], whose module docs
+//! state the values, the rounding rule, the saturation and the timing this block implements.
+//!
+//! [`PcCounter`]: crate::PcCounter
+//! [`EtTimer`]: crate::EtTimer
+//! [`MtCounter`]: crate::MtCounter
+//! [`SpeedCalc`]: crate::SpeedCalc
+//!
+//! # Generation parameters
+//!
+//! | parameter | meaning | range |
+//! |---|---|---|
+//! | `N` | counter width: every count input and `cfg_dt` | 8..=32 |
+//! | `F` | fractional bits of the speeds | 2..=24 |
+//! | `S` | must be N + F + 1: width of each speed output | derived |
+//!
+//! Stable Rust cannot compute `N + F + 1` from generic `N` and `F`, so `S` is a parameter
+//! too, checked at compile time. Name the type with
+//! [`baseline_speeds_type!`](crate::baseline_speeds_type): `baseline_speeds_type!(24, 16)` is
+//! `BaselineSpeeds<24, 16, 41>`.
+//!
+//! # Ports
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clock` | in | 1 | clock; everything happens at its rising edge |
+//! | `reset` | in | 1 | synchronous, active high; wins over `start` |
+//! | `start` | in | 1 | request a computation; latches every input below |
+//! | `pc_count` | in | N | PC: net steps of the window, two's complement |
+//! | `et_period` | in | N | ET: clock cycles between the last two steps, unsigned |
+//! | `et_negative` | in | 1 | ET direction: 1 = reverse |
+//! | `et_valid` | in | 1 | 1 = `et_period` is available and trustworthy; 0 gives `speed_et` = 0 |
+//! | `mt_m` | in | N | M/T: steps m, unsigned |
+//! | `mt_t` | in | N | M/T: clock cycles t, unsigned |
+//! | `mt_negative` | in | 1 | M/T direction: 1 = reverse |
+//! | `cfg_dt` | in | N | window dt, clock cycles, unsigned (0 counts as 1) |
+//! | `mode_shift` | in | 2 | log2 of the decoding multiplier: 0 = x1, 1 = x2, 2 = x4 (3 counts as 2) |
+//! | `speed_pc` | out | N+F+1 | `pc_count`·2^(F−s), exact |
+//! | `speed_et` | out | N+F+1 | ±round(dt·2^(F−s)/`et_period`); 0 if `et_valid` = 0 or `et_period` = 0 |
+//! | `speed_mt` | out | N+F+1 | ±round(m·dt·2^(F−s)/t), saturated at ±(2^(N+F) − 1); 0 if m = 0 or t = 0 |
+//! | `valid` | out | 1 | one cycle: the three speeds were just written (together) |
+//! | `busy` | out | 1 | a computation runs or a request is pending |
+//!
+//! Speeds are two's complement, Q(N).F in units of ω_lim = one encoder line per dt: the value
+//! is `raw · 2^−F`. round is to nearest with ties away from zero on the magnitude, then the
+//! sign: error ≤ 2^−(F+1) ω_lim. `speed_pc` and `speed_et` always fit; `speed_mt` fits when
+//! m ≤ t (always so from [`MtCounter`](crate::MtCounter)) and saturates otherwise.
+//!
+//! # Timing
+//!
+//! A `start` sampled at edge k while idle gives `valid` after edge k + L, with
+//! L = 2·(N + F + 1) + 3 ([`golden::baselines::baseline_speeds::latency_cycles`]; 85 for N = 24,
+//! F = 16), whatever the operands. `busy` is high after edges k … k + L − 1. A `start`
+//! while busy latches its inputs into the one-deep request register (replacing a request
+//! that has not begun) and is served at the edge after the current `valid`, so the values of
+//! the last start are always computed; starts at least L cycles apart each get their own
+//! result, L cycles later.
+//!
+//! # Datapath
+//!
+//! Schedule, state register IDLE → STEP ×S → SETUP → STEP ×S → FINISH → IDLE:
+//!
+//! * **Take** (IDLE with a request pending): the request is copied into the working
+//!   registers and the divider is set up for ET at once: X = dt (A = 0, Q = dt), den =
+//!   `et_period`.
+//! * **STEP ×S, ET**: S = N + F + 1 divider steps. During the first N the **multiplier**
+//!   forms m·dt least significant bit first: if bit 0 of Q is set, A + dt (N bits plus the
+//!   carry read off the operands' and the sum's top bits), then {carry, A, Q} shifts right
+//!   by one; after N steps {A, Q} = m·dt. No N×N multiplier (iCE40 has no DSP).
+//! * **SETUP**: the ET result is rounded and signed into a staging register; the divider is
+//!   set up for M/T: X = {A, Q}, den = t, and the saturation flag is A >> s ≥ t.
+//! * **STEP ×S, M/T**, then **FINISH** writes `speed_pc` (the working copy of `pc_count`
+//!   shifted), `speed_et` (staged) and `speed_mt` (rounded now) together with `valid`.
+//!
+//! **Divider** (restoring, radix 2, [`golden::baselines::baseline_speeds::hardware_magnitude`]): for
+//! num' = X·2^(2−s) (2N + 2 bits, never formed) the partial remainder R (N bits) is preloaded
+//! with num' >> (N + 2) = A >> s, and an S-bit register `dq` with the low N + 2 bits of num'
+//! (A's low s bits, Q, 2 − s zeros) at its top. Each step shifts one numerator bit out of
+//! the top of `dq` into 2R + b and one quotient bit into its bottom, so after S steps `dq`
+//! holds q = ⌊X·2^(F+1−s)/den⌋ (S bits, since R < den) without ever forming X·2^F. The
+//! trial 2R + b needs N + 1 bits: its top bit is R's, and 2R + b ≥ den is read off the
+//! borrow of one N-bit subtraction. The magnitude is (q + 1) >> 1; q all ones (which would
+//! round up past the format) and a preload not below den saturate to 2^(N+F) − 1. Rounding
+//! and sign share one adder: with h = q >> 1 and r = q & 1, the result is (h, or ~h if
+//! negative) + (r xor negative), as in [`SpeedCalc`](crate::SpeedCalc).
+//!
+//! **PC**: `pc_count` is shifted in at the top of S bits (pc·2^(F+1)), then shifted right
+//! arithmetically 1 + s times: pc·2^(F−s). F ≥ 2 keeps F − s ≥ 0.
+//!
+//! Widths never change inside an expression (rust-hdl emits literals 32 bits wide and casts
+//! as masks that Verilator flags): N-bit values are widened to S bits by shift-in loops
+//! (wires after synthesis) and every constant is a `Constant` of its operand's width.
+//!
+//! # Resources
+//!
+//! Registers: the request (5N + 6), working copies and flags (2N + 7), the multiplier (3N),
+//! the divider (2N + S), staging and outputs (4S + 1), a 6-bit step counter and 3 control
+//! bits: 516 for N = 24, F = 16 (S = 41). Adders: the divider's N-bit trial subtraction,
+//! the multiplier's N-bit add, the S-bit round-and-sign adder, the N-bit saturation
+//! comparison. yosys 0.23 `synth_ice40 -top baseline_speeds; stat` on
+//! `baseline_speeds_verilog::<24, 16, 41>` maps the block to 501 flip-flops (constant bits
+//! removed), 642 LUT4 and 118 carry cells (SpeedCalc, three divisions of 2N + 1 bits: 604,
+//! 792 and 277).
+
+use rust_hdl::prelude::*;
+
+/// Width of the step counter: it holds S − 1 ≤ 56.
+const COUNT_BITS: usize = 6;
+/// Width of the state register.
+const STATE_BITS: usize = 2;
+/// Width of the shift-amount constants.
+const SHIFT_BITS: usize = 8;
+
+/// The `BaselineSpeeds` type for counter width `$n` and `$f` fractional bits (literals or
+/// constants), with the derived width filled in: `baseline_speeds_type!(24, 16)` is
+/// `BaselineSpeeds<24, 16, 41>`.
+#[macro_export]
+macro_rules! baseline_speeds_type {
+    ($n:expr, $f:expr) => {
+        $crate::BaselineSpeeds<{ $n }, { $f }, { $n + $f + 1 }>
+    };
+}
+
+/// Baseline speeds: PC, ET and M/T results as signed Q(N).F fixed point.
+#[derive(LogicBlock)]
+pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
+    /// Clock.
+    pub clock: Signal<In, Clock>,
+    /// Synchronous active-high reset (wins over `start`).
+    pub reset: Signal<In, Bit>,
+    /// Request a computation; latches every input.
+    pub start: Signal<In, Bit>,
+    /// PC: net steps of the window, two's complement.
+    pub pc_count: Signal<In, Bits<N>>,
+    /// ET: clock cycles between the last two steps.
+    pub et_period: Signal<In, Bits<N>>,
+    /// ET direction: 1 = reverse.
+    pub et_negative: Signal<In, Bit>,
+    /// 1 = `et_period` is available and trustworthy (else `speed_et` = 0).
+    pub et_valid: Signal<In, Bit>,
+    /// M/T: steps m.
+    pub mt_m: Signal<In, Bits<N>>,
+    /// M/T: clock cycles t.
+    pub mt_t: Signal<In, Bits<N>>,
+    /// M/T direction: 1 = reverse.
+    pub mt_negative: Signal<In, Bit>,
+    /// Window dt, clock cycles (0 counts as 1).
+    pub cfg_dt: Signal<In, Bits<N>>,
+    /// log2 of the decoding multiplier (x1, x2, x4; 3 counts as 2).
+    pub mode_shift: Signal<In, Bits<2>>,
+    /// PC speed, Q(N).F two's complement, units of ω_lim.
+    pub speed_pc: Signal<Out, Bits<S>>,
+    /// ET speed, Q(N).F two's complement, units of ω_lim.
+    pub speed_et: Signal<Out, Bits<S>>,
+    /// M/T speed, Q(N).F two's complement, units of ω_lim.
+    pub speed_mt: Signal<Out, Bits<S>>,
+    /// One-cycle strobe: the three speeds were just written.
+    pub valid: Signal<Out, Bit>,
+    /// A computation runs or a request is pending.
+    pub busy: Signal<Out, Bit>,
+    // Request register.
+    req_pc: DFF<Bits<N>>,
+    req_period: DFF<Bits<N>>,
+    req_et_neg: DFF<Bit>,
+    req_et_valid: DFF<Bit>,
+    req_m: DFF<Bits<N>>,
+    req_t: DFF<Bits<N>>,
+    req_mt_neg: DFF<Bit>,
+    req_dt: DFF<Bits<N>>,
+    req_shift: DFF<Bits<2>>,
+    pending: DFF<Bit>,
+    // Working copy of what is needed after the take edge.
+    w_pc: DFF<Bits<N>>,
+    w_t: DFF<Bits<N>>,
+    /// s ≥ 1.
+    w_sh1: DFF<Bit>,
+    /// s ≥ 2.
+    w_sh2: DFF<Bit>,
+    w_et_neg: DFF<Bit>,
+    /// `speed_et` = 0.
+    w_et_zero: DFF<Bit>,
+    w_mt_neg: DFF<Bit>,
+    /// `speed_mt` = 0.
+    w_mt_zero: DFF<Bit>,
+    /// `speed_mt` saturates (preload not below t).
+    w_mt_sat: DFF<Bit>,
+    // Sequencer.
+    state: DFF<Bits<STATE_BITS>>,
+    /// 0: the ET division, 1: the M/T division.
+    phase: DFF<Bit>,
+    count: DFF<Bits<COUNT_BITS>>,
+    // Multiplier: {A, Q} = m·dt after N steps; md = dt.
+    mul_md: DFF<Bits<N>>,
+    mul_a: DFF<Bits<N>>,
+    mul_q: DFF<Bits<N>>,
+    // Divider.
+    part_rem: DFF<Bits<N>>,
+    den: DFF<Bits<N>>,
+    /// Numerator bits out at the top, quotient bits in at the bottom.
+    dq: DFF<Bits<S>>,
+    // Results.
+    stage_et: DFF<Bits<S>>,
+    out_pc: DFF<Bits<S>>,
+    out_et: DFF<Bits<S>>,
+    out_mt: DFF<Bits<S>>,
+    valid_reg: DFF<Bit>,
+    // Combinational.
+    /// Idle with a request pending: take it.
+    take: Signal<Local, Bit>,
+    /// `cfg_dt` of the request, 0 replaced by 1.
+    dt_eff: Signal<Local, Bits<N>>,
+    // Divider set-up: ET at the take edge (A = 0, Q = dt), M/T at SETUP (the product).
+    src_a: Signal<Local, Bits<N>>,
+    src_q: Signal<Local, Bits<N>>,
+    src_sh1: Signal<Local, Bit>,
+    src_sh2: Signal<Local, Bit>,
+    load_dq: Signal<Local, Bits<S>>,
+    load_rem: Signal<Local, Bits<N>>,
+    // Multiplier step.
+    /// Bit 0 of Q: add dt in this step.
+    mul_q0: Signal<Local, Bit>,
+    mul_sum: Signal<Local, Bits<N>>,
+    mul_a_msb: Signal<Local, Bit>,
+    mul_md_msb: Signal<Local, Bit>,
+    mul_sum_msb: Signal<Local, Bit>,
+    mul_carry: Signal<Local, Bit>,
+    // Divider step.
+    dq_msb: Signal<Local, Bit>,
+    rem_msb: Signal<Local, Bit>,
+    /// 2R + b, N bits (its carry is `rem_msb`).
+    shifted: Signal<Local, Bits<N>>,
+    /// shifted − den (N bits, wrapping).
+    diff: Signal<Local, Bits<N>>,
+    shifted_msb: Signal<Local, Bit>,
+    den_msb: Signal<Local, Bit>,
+    /// shifted < den.
+    borrow: Signal<Local, Bit>,
+    fits: Signal<Local, Bit>,
+    next_rem: Signal<Local, Bits<N>>,
+    // Round and sign.
+    sel_neg: Signal<Local, Bit>,
+    sel_zero: Signal<Local, Bit>,
+    sel_sat: Signal<Local, Bit>,
+    /// Quotient >> 1 (or a special value).
+    half: Signal<Local, Bits<S>>,
+    /// Quotient bit 0: the rounding increment.
+    round_bit: Signal<Local, Bit>,
+    addend: Signal<Local, Bits<S>>,
+    rounded: Signal<Local, Bits<S>>,
+    // PC.
+    pc_sign: Signal<Local, Bit>,
+    pc_speed: Signal<Local, Bits<S>>,
+    // Constants, each of the width it is used at.
+    n_zero: Constant<Bits<N>>,
+    n_one: Constant<Bits<N>>,
+    /// 2^(N−1).
+    n_msb: Constant<Bits<N>>,
+    s_zero: Constant<Bits<S>>,
+    s_one: Constant<Bits<S>>,
+    /// 2^(S−1).
+    s_msb: Constant<Bits<S>>,
+    /// 2^(N+F) − 1: the saturated magnitude.
+    s_max: Constant<Bits<S>>,
+    sh_one: Constant<Bits<SHIFT_BITS>>,
+    sh_two: Constant<Bits<SHIFT_BITS>>,
+    mode_zero: Constant<Bits<2>>,
+    /// Bit 1 of `mode_shift`: s = 2.
+    mode_two: Constant<Bits<2>>,
+    count_zero: Constant<Bits<COUNT_BITS>>,
+    count_one: Constant<Bits<COUNT_BITS>>,
+    /// S − 1: loaded at each set-up.
+    count_first: Constant<Bits<COUNT_BITS>>,
+    /// F: the multiplier runs while count > F (the first N steps).
+    count_mul_end: Constant<Bits<COUNT_BITS>>,
+    st_idle: Constant<Bits<STATE_BITS>>,
+    st_step: Constant<Bits<STATE_BITS>>,
+    st_setup: Constant<Bits<STATE_BITS>>,
+    st_finish: Constant<Bits<STATE_BITS>>,
+}
+
+impl<const N: usize, const F: usize, const S: usize> BaselineSpeeds<N, F, S> {
+    const PARAMS_OK: () = {
+        assert!(N >= 8 && N <= 32, "BaselineSpeeds supports N in 8..=32");
+        assert!(F >= 2 && F <= 24, "BaselineSpeeds supports F in 2..=24");
+        assert!(S == N + F + 1, "BaselineSpeeds needs S = N + F + 1");
+    };
+}
+
+impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<N, F, S> {
+    fn default() -> Self {
+        let () = Self::PARAMS_OK;
+        let c = |v: usize| -> u64 { v.try_into().unwrap() };
+        Self {
+            clock: Default::default(),
+            reset: Default::default(),
+            start: Default::default(),
+            pc_count: Default::default(),
+            et_period: Default::default(),
+            et_negative: Default::default(),
+            et_valid: Default::default(),
+            mt_m: Default::default(),
+            mt_t: Default::default(),
+            mt_negative: Default::default(),
+            cfg_dt: Default::default(),
+            mode_shift: Default::default(),
+            speed_pc: Default::default(),
+            speed_et: Default::default(),
+            speed_mt: Default::default(),
+            valid: Default::default(),
+            busy: Default::default(),
+            req_pc: Default::default(),
+            req_period: Default::default(),
+            req_et_neg: Default::default(),
+            req_et_valid: Default::default(),
+            req_m: Default::default(),
+            req_t: Default::default(),
+            req_mt_neg: Default::default(),
+            req_dt: Default::default(),
+            req_shift: Default::default(),
+            pending: Default::default(),
+            w_pc: Default::default(),
+            w_t: Default::default(),
+            w_sh1: Default::default(),
+            w_sh2: Default::default(),
+            w_et_neg: Default::default(),
+            w_et_zero: Default::default(),
+            w_mt_neg: Default::default(),
+            w_mt_zero: Default::default(),
+            w_mt_sat: Default::default(),
+            state: Default::default(),
+            phase: Default::default(),
+            count: Default::default(),
+            mul_md: Default::default(),
+            mul_a: Default::default(),
+            mul_q: Default::default(),
+            part_rem: Default::default(),
+            den: Default::default(),
+            dq: Default::default(),
+            stage_et: Default::default(),
+            out_pc: Default::default(),
+            out_et: Default::default(),
+            out_mt: Default::default(),
+            valid_reg: Default::default(),
+            take: Default::default(),
+            dt_eff: Default::default(),
+            src_a: Default::default(),
+            src_q: Default::default(),
+            src_sh1: Default::default(),
+            src_sh2: Default::default(),
+            load_dq: Default::default(),
+            load_rem: Default::default(),
+            mul_q0: Default::default(),
+            mul_sum: Default::default(),
+            mul_a_msb: Default::default(),
+            mul_md_msb: Default::default(),
+            mul_sum_msb: Default::default(),
+            mul_carry: Default::default(),
+            dq_msb: Default::default(),
+            rem_msb: Default::default(),
+            shifted: Default::default(),
+            diff: Default::default(),
+            shifted_msb: Default::default(),
+            den_msb: Default::default(),
+            borrow: Default::default(),
+            fits: Default::default(),
+            next_rem: Default::default(),
+            sel_neg: Default::default(),
+            sel_zero: Default::default(),
+            sel_sat: Default::default(),
+            half: Default::default(),
+            round_bit: Default::default(),
+            addend: Default::default(),
+            rounded: Default::default(),
+            pc_sign: Default::default(),
+            pc_speed: Default::default(),
+            n_zero: Constant::new(0.into()),
+            n_one: Constant::new(1.into()),
+            n_msb: Constant::new((1u64 << (N - 1)).into()),
+            s_zero: Constant::new(0.into()),
+            s_one: Constant::new(1.into()),
+            s_msb: Constant::new((1u64 << (S - 1)).into()),
+            s_max: Constant::new(((1u64 << (N + F)) - 1).into()),
+            sh_one: Constant::new(1.into()),
+            sh_two: Constant::new(2.into()),
+            mode_zero: Constant::new(0.into()),
+            mode_two: Constant::new(2.into()),
+            count_zero: Constant::new(0.into()),
+            count_one: Constant::new(1.into()),
+            count_first: Constant::new(c(S - 1).into()),
+            count_mul_end: Constant::new(c(F).into()),
+            st_idle: Constant::new(0.into()),
+            st_step: Constant::new(1.into()),
+            st_setup: Constant::new(2.into()),
+            st_finish: Constant::new(3.into()),
+        }
+    }
+}
+
+impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N, F, S> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clock,
+            req_pc,
+            req_period,
+            req_et_neg,
+            req_et_valid,
+            req_m,
+            req_t,
+            req_mt_neg,
+            req_dt,
+            req_shift,
+            pending,
+            w_pc,
+            w_t,
+            w_sh1,
+            w_sh2,
+            w_et_neg,
+            w_et_zero,
+            w_mt_neg,
+            w_mt_zero,
+            w_mt_sat,
+            state,
+            phase,
+            count,
+            mul_md,
+            mul_a,
+            mul_q,
+            part_rem,
+            den,
+            dq,
+            stage_et,
+            out_pc,
+            out_et,
+            out_mt,
+            valid_reg
+        );
+        self.take.next = (self.state.q.val() == self.st_idle.val()) & self.pending.q.val();
+        self.dt_eff.next = self.req_dt.q.val();
+        if self.req_dt.q.val() == self.n_zero.val() {
+            self.dt_eff.next = self.n_one.val();
+        }
+
+        // Divider set-up, shared by the take edge (ET: X = dt, i.e. A = 0, Q = dt) and
+        // SETUP (M/T: X = {A, Q} from the multiplier). num' = X·2^(2−s): the partial
+        // remainder gets num' >> (N + 2) = A >> s, `dq` the low N + 2 bits of num' at its
+        // top: Q shifted in at the top, then shifted right s times taking in A's low bits.
+        self.src_a.next = self.mul_a.q.val();
+        self.src_q.next = self.mul_q.q.val();
+        self.src_sh1.next = self.w_sh1.q.val();
+        self.src_sh2.next = self.w_sh2.q.val();
+        if self.take.val() {
+            self.src_a.next = self.n_zero.val();
+            self.src_q.next = self.dt_eff.val();
+            self.src_sh1.next = self.req_shift.q.val() != self.mode_zero.val();
+            self.src_sh2.next =
+                (self.req_shift.q.val() & self.mode_two.val()) != self.mode_zero.val();
+        }
+        self.load_dq.next = self.s_zero.val();
+        for i in 0..N {
+            if self.src_q.val().get_bit(i) {
+                self.load_dq.next = (self.load_dq.val() >> self.sh_one.val()) | self.s_msb.val();
+            } else {
+                self.load_dq.next = self.load_dq.val() >> self.sh_one.val();
+            }
+        }
+        self.load_rem.next = self.src_a.val();
+        if self.src_sh1.val() {
+            self.load_rem.next = self.src_a.val() >> self.sh_one.val();
+            if self.src_a.val().get_bit(0) {
+                self.load_dq.next = (self.load_dq.val() >> self.sh_one.val()) | self.s_msb.val();
+            } else {
+                self.load_dq.next = self.load_dq.val() >> self.sh_one.val();
+            }
+        }
+        if self.src_sh2.val() {
+            self.load_rem.next = self.src_a.val() >> self.sh_two.val();
+            if self.src_a.val().get_bit(1) {
+                self.load_dq.next = (self.load_dq.val() >> self.sh_one.val()) | self.s_msb.val();
+            } else {
+                self.load_dq.next = self.load_dq.val() >> self.sh_one.val();
+            }
+        }
+
+        // Multiplier step: A + (Q bit 0 ? dt : 0) with its carry, from the top bits.
+        self.mul_a_msb.next = (self.mul_a.q.val() & self.n_msb.val()) != self.n_zero.val();
+        self.mul_md_msb.next = (self.mul_md.q.val() & self.n_msb.val()) != self.n_zero.val();
+        self.mul_q0.next = (self.mul_q.q.val() & self.n_one.val()) != self.n_zero.val();
+        self.mul_sum.next = self.mul_a.q.val();
+        if self.mul_q0.val() {
+            self.mul_sum.next = self.mul_a.q.val() + self.mul_md.q.val();
+        }
+        self.mul_sum_msb.next = (self.mul_sum.val() & self.n_msb.val()) != self.n_zero.val();
+        self.mul_carry.next = self.mul_q0.val()
+            & ((self.mul_a_msb.val() & self.mul_md_msb.val())
+                | ((self.mul_a_msb.val() | self.mul_md_msb.val()) & (!self.mul_sum_msb.val())));
+
+        // Divider step: bring down the top bit of dq, subtract if 2R + b ≥ den. R's top
+        // bit is the carry of 2R + b: if set, it fits; else compare by the borrow.
+        self.dq_msb.next = (self.dq.q.val() & self.s_msb.val()) != self.s_zero.val();
+        self.rem_msb.next = (self.part_rem.q.val() & self.n_msb.val()) != self.n_zero.val();
+        self.shifted.next = self.part_rem.q.val() << self.sh_one.val();
+        if self.dq_msb.val() {
+            self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.n_one.val();
+        }
+        self.diff.next = self.shifted.val() - self.den.q.val();
+        self.shifted_msb.next = (self.shifted.val() & self.n_msb.val()) != self.n_zero.val();
+        self.den_msb.next = (self.den.q.val() & self.n_msb.val()) != self.n_zero.val();
+        self.borrow.next = ((!self.shifted_msb.val()) & self.den_msb.val())
+            | ((!(self.shifted_msb.val() ^ self.den_msb.val()))
+                & ((self.diff.val() & self.n_msb.val()) != self.n_zero.val()));
+        self.fits.next = self.rem_msb.val() | (!self.borrow.val());
+        self.next_rem.next = self.shifted.val();
+        if self.fits.val() {
+            self.next_rem.next = self.diff.val();
+        }
+
+        // Round and sign with one adder: with q = dq, h = q >> 1 and r = q & 1, the result
+        // is (h, or ~h if negative) + (r xor negative). q all ones would round past the
+        // format: r is dropped (h is then the maximum). Saturation: h = max, r = 0; zero:
+        // h = 0, r = 0.
+        self.sel_neg.next = self.w_et_neg.q.val();
+        self.sel_zero.next = self.w_et_zero.q.val();
+        self.sel_sat.next = false;
+        if self.phase.q.val() {
+            self.sel_neg.next = self.w_mt_neg.q.val();
+            self.sel_zero.next = self.w_mt_zero.q.val();
+            self.sel_sat.next = self.w_mt_sat.q.val();
+        }
+        self.half.next = self.dq.q.val() >> self.sh_one.val();
+        self.round_bit.next =
+            ((self.dq.q.val() & self.s_one.val()) != self.s_zero.val()) & (!self.dq.q.val().all());
+        if self.sel_sat.val() {
+            self.half.next = self.s_max.val();
+            self.round_bit.next = false;
+        }
+        if self.sel_zero.val() {
+            self.half.next = self.s_zero.val();
+            self.round_bit.next = false;
+        }
+        self.addend.next = self.half.val();
+        if self.sel_neg.val() {
+            self.addend.next = !self.half.val();
+        }
+        self.rounded.next = self.addend.val();
+        if self.round_bit.val() ^ self.sel_neg.val() {
+            self.rounded.next = self.addend.val() + self.s_one.val();
+        }
+
+        // PC: pc_count at the top of S bits is pc·2^(F+1); 1 + s arithmetic right shifts.
+        self.pc_sign.next = (self.w_pc.q.val() & self.n_msb.val()) != self.n_zero.val();
+        self.pc_speed.next = self.s_zero.val();
+        for i in 0..N {
+            if self.w_pc.q.val().get_bit(i) {
+                self.pc_speed.next = (self.pc_speed.val() >> self.sh_one.val()) | self.s_msb.val();
+            } else {
+                self.pc_speed.next = self.pc_speed.val() >> self.sh_one.val();
+            }
+        }
+        if self.pc_sign.val() {
+            self.pc_speed.next = (self.pc_speed.val() >> self.sh_one.val()) | self.s_msb.val();
+        } else {
+            self.pc_speed.next = self.pc_speed.val() >> self.sh_one.val();
+        }
+        if self.w_sh1.q.val() {
+            if self.pc_sign.val() {
+                self.pc_speed.next = (self.pc_speed.val() >> self.sh_one.val()) | self.s_msb.val();
+            } else {
+                self.pc_speed.next = self.pc_speed.val() >> self.sh_one.val();
+            }
+        }
+        if self.w_sh2.q.val() {
+            if self.pc_sign.val() {
+                self.pc_speed.next = (self.pc_speed.val() >> self.sh_one.val()) | self.s_msb.val();
+            } else {
+                self.pc_speed.next = self.pc_speed.val() >> self.sh_one.val();
+            }
+        }
+
+        // Sequencer.
+        self.valid_reg.d.next = false;
+        if self.take.val() | (self.state.q.val() == self.st_setup.val()) {
+            self.part_rem.d.next = self.load_rem.val();
+            self.dq.d.next = self.load_dq.val();
+            self.count.d.next = self.count_first.val();
+            self.state.d.next = self.st_step.val();
+        }
+        if self.take.val() {
+            self.den.d.next = self.req_period.q.val();
+            self.w_pc.d.next = self.req_pc.q.val();
+            self.w_t.d.next = self.req_t.q.val();
+            self.w_sh1.d.next = self.src_sh1.val();
+            self.w_sh2.d.next = self.src_sh2.val();
+            self.w_et_neg.d.next = self.req_et_neg.q.val();
+            self.w_et_zero.d.next =
+                (!self.req_et_valid.q.val()) | (self.req_period.q.val() == self.n_zero.val());
+            self.w_mt_neg.d.next = self.req_mt_neg.q.val();
+            self.w_mt_zero.d.next = (self.req_m.q.val() == self.n_zero.val())
+                | (self.req_t.q.val() == self.n_zero.val());
+            self.mul_md.d.next = self.dt_eff.val();
+            self.mul_a.d.next = self.n_zero.val();
+            self.mul_q.d.next = self.req_m.q.val();
+            self.phase.d.next = false;
+            self.pending.d.next = false;
+        }
+        if self.state.q.val() == self.st_setup.val() {
+            self.den.d.next = self.w_t.q.val();
+            self.stage_et.d.next = self.rounded.val();
+            self.w_mt_sat.d.next = self.load_rem.val() >= self.w_t.q.val();
+            self.phase.d.next = true;
+        }
+        if self.state.q.val() == self.st_step.val() {
+            self.part_rem.d.next = self.next_rem.val();
+            self.dq.d.next = self.dq.q.val() << self.sh_one.val();
+            if self.fits.val() {
+                self.dq.d.next = (self.dq.q.val() << self.sh_one.val()) | self.s_one.val();
+            }
+            self.count.d.next = self.count.q.val() - self.count_one.val();
+            if (!self.phase.q.val()) & (self.count.q.val() > self.count_mul_end.val()) {
+                self.mul_a.d.next = self.mul_sum.val() >> self.sh_one.val();
+                if self.mul_carry.val() {
+                    self.mul_a.d.next =
+                        (self.mul_sum.val() >> self.sh_one.val()) | self.n_msb.val();
+                }
+                self.mul_q.d.next = self.mul_q.q.val() >> self.sh_one.val();
+                if (self.mul_sum.val() & self.n_one.val()) != self.n_zero.val() {
+                    self.mul_q.d.next =
+                        (self.mul_q.q.val() >> self.sh_one.val()) | self.n_msb.val();
+                }
+            }
+            if self.count.q.val() == self.count_zero.val() {
+                self.state.d.next = self.st_setup.val();
+                if self.phase.q.val() {
+                    self.state.d.next = self.st_finish.val();
+                }
+            }
+        }
+        if self.state.q.val() == self.st_finish.val() {
+            self.out_pc.d.next = self.pc_speed.val();
+            self.out_et.d.next = self.stage_et.q.val();
+            self.out_mt.d.next = self.rounded.val();
+            self.valid_reg.d.next = true;
+            self.state.d.next = self.st_idle.val();
+        }
+        if self.start.val() {
+            self.req_pc.d.next = self.pc_count.val();
+            self.req_period.d.next = self.et_period.val();
+            self.req_et_neg.d.next = self.et_negative.val();
+            self.req_et_valid.d.next = self.et_valid.val();
+            self.req_m.d.next = self.mt_m.val();
+            self.req_t.d.next = self.mt_t.val();
+            self.req_mt_neg.d.next = self.mt_negative.val();
+            self.req_dt.d.next = self.cfg_dt.val();
+            self.req_shift.d.next = self.mode_shift.val();
+            self.pending.d.next = true;
+        }
+        if self.reset.val() {
+            self.pending.d.next = false;
+            self.state.d.next = self.st_idle.val();
+            self.valid_reg.d.next = false;
+            self.out_pc.d.next = self.s_zero.val();
+            self.out_et.d.next = self.s_zero.val();
+            self.out_mt.d.next = self.s_zero.val();
+        }
+        self.speed_pc.next = self.out_pc.q.val();
+        self.speed_et.next = self.out_et.q.val();
+        self.speed_mt.next = self.out_mt.q.val();
+        self.valid.next = self.valid_reg.q.val();
+        self.busy.next = self.pending.q.val() | (self.state.q.val() != self.st_idle.val());
+    }
+}
+
+/// The Verilog of a `BaselineSpeeds<N, F, S>` with its top module named `module_name`.
+pub fn baseline_speeds_verilog<const N: usize, const F: usize, const S: usize>(
+    module_name: &str,
+) -> String {
+    crate::verilog::default_block_verilog::<BaselineSpeeds<N, F, S>>(module_name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    type Uut = crate::baseline_speeds_type!(24, 16);
+
+    struct Req {
+        pc: i64,
+        period: u64,
+        m: u64,
+        t: u64,
+        dt: u64,
+        shift: u64,
+        negative: bool,
+    }
+
+    fn step(uut: &mut Uut, start: bool, r: &Req) {
+        uut.reset.next = false;
+        uut.start.next = start;
+        uut.pc_count.next = ((r.pc as u64) & ((1 << 24) - 1)).into();
+        uut.et_period.next = r.period.into();
+        uut.et_negative.next = r.negative;
+        uut.et_valid.next = true;
+        uut.mt_m.next = r.m.into();
+        uut.mt_t.next = r.t.into();
+        uut.mt_negative.next = r.negative;
+        uut.cfg_dt.next = r.dt.into();
+        uut.mode_shift.next = r.shift.into();
+        uut.clock.next = Clock { clk: false };
+        assert!(simulate(uut, 100));
+        uut.clock.next = Clock { clk: true };
+        assert!(simulate(uut, 100));
+    }
+
+    /// 41-bit raw port bits as a signed value.
+    fn signed(raw: u64) -> i64 {
+        ((raw << 23) as i64) >> 23
+    }
+
+    #[test]
+    fn known_answers_by_hand_in_85_cycles() {
+        let mut uut = Uut::default();
+        uut.connect_all();
+        // x2, dt = 10: PC −5 → −5·2^15 = −163840; ET period 3 → 10·32768/3 = 109226.67 →
+        // −109227; M/T 3 in 7 → 30·32768/7 = 140434.29 → −140434.
+        let r = Req {
+            pc: -5,
+            period: 3,
+            m: 3,
+            t: 7,
+            dt: 10,
+            shift: 1,
+            negative: true,
+        };
+        step(&mut uut, true, &r);
+        // Busy after edges 0 (the start) to 84, valid after edge 85.
+        for k in 1..=85 {
+            assert!(uut.busy.val() && !uut.valid.val(), "after edge {}", k - 1);
+            step(&mut uut, false, &r);
+        }
+        assert!(uut.valid.val() && !uut.busy.val());
+        assert_eq!(signed(uut.speed_pc.val().to_u64()), -163_840);
+        assert_eq!(signed(uut.speed_et.val().to_u64()), -109_227);
+        assert_eq!(signed(uut.speed_mt.val().to_u64()), -140_434);
+    }
+
+    #[test]
+    fn synthesises() {
+        let mut uut = Uut::default();
+        uut.connect_all();
+        yosys_validate("encspeed_baseline_speeds", &generate_verilog(&uut)).unwrap();
+    }
+
+    #[test]
+    fn verilator_lint_is_clean() {
+        let lint = |v: String| crate::test_support::verilator_lint("baseline_speeds", &v);
+        lint(baseline_speeds_verilog::<8, 2, 11>("baseline_speeds"));
+        lint(baseline_speeds_verilog::<12, 8, 21>("baseline_speeds"));
+        lint(baseline_speeds_verilog::<24, 16, 41>("baseline_speeds"));
+        lint(baseline_speeds_verilog::<32, 24, 57>("baseline_speeds"));
+    }
+}

@@ -1,0 +1,568 @@
+//! Speed calculator: Rairán's n1, n2 and n3 from the registers Nep1 and Ndt1, as signed
+//! fixed-point speeds, by a sequential divider and a sequential shift-add multiplier. A
+//! standalone block (not yet in `encspeed_core`); its bit-true model is
+//! [`golden::estimator::speed_calc::SpeedCalcModel`], whose module docs state the values, the rounding
+//! rule and the timing this block implements.
+//!
+//! # Generation parameters
+//!
+//! | parameter | meaning | range |
+//! |---|---|---|
+//! | `N` | counter width: `nep`, `ndt` (as `counter_bits` of the core) | 8..=32 |
+//! | `F` | fractional bits of the speeds (`speed_frac_bits`) | 0..=24 |
+//! | `P` | must be 2·N + 1: products, denominator, partial remainder | derived |
+//! | `S` | must be N + F + 1: width of each speed output | derived |
+//!
+//! rust-hdl widths are const generics and stable Rust cannot compute `2 * N + 1` from a
+//! generic `N`, so the derived widths are parameters too, checked at compile time. Name the
+//! type with [`speed_calc_type!`](crate::speed_calc_type): `speed_calc_type!(24, 16)` is
+//! `SpeedCalc<24, 16, 49, 41>`.
+//!
+//! # Ports
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clock` | in | 1 | clock; everything happens at its rising edge |
+//! | `reset` | in | 1 | synchronous, active high; wins over `start` |
+//! | `start` | in | 1 | request a computation (the core's `update`); latches the three inputs below |
+//! | `nep` | in | N | Nep1 (pulses), unsigned |
+//! | `ndt` | in | N | Ndt1 (dt intervals), unsigned |
+//! | `negative` | in | 1 | direction: 1 = reverse, the speeds come out negative |
+//! | `speed_n1` | out | N+F+1 | n1 = Nep/Ndt, eq. (5) |
+//! | `speed_n2` | out | N+F+1 | n2, eq. (6) |
+//! | `speed_n3` | out | N+F+1 | n3, eq. (11): the estimate to use |
+//! | `valid` | out | 1 | one cycle: the three speeds were just written (together) |
+//! | `busy` | out | 1 | a computation runs or a request is pending |
+//!
+//! Speeds are two's complement, Q(N).F in units of ω_lim: the value is `raw · 2^−F`. Each
+//! is the exact value rounded to nearest (ties away from zero) in magnitude, then negated if
+//! `negative`: error ≤ 2^−(F+1) ω_lim ([`golden::estimator::speed_calc::speed_lsb_error`]). Nep = 0 gives
+//! 0; Ndt = 0 (never produced by the core) gives ±(2^(N+F) − 1) for Nep ≥ 1.
+//!
+//! # Timing
+//!
+//! A `start` sampled at edge k while idle gives `valid` after edge k + L, with
+//! L = 3·(N + F + 1) + 5 ([`golden::estimator::speed_calc::latency_cycles`]; 128 for N = 24, F = 16),
+//! whatever the operands. `busy` is high after edges k … k + L − 1. A `start` while busy
+//! latches its inputs into the one-deep request register (replacing a request that has not
+//! begun) and is served at the edge after the current `valid`, so the values of the last
+//! start are always computed. With the core's update pattern no update is lost when
+//! dt ≥ 2·L − 1 cycles ([`golden::estimator::speed_calc::min_lossless_dt`]).
+//!
+//! # Datapath
+//!
+//! Schedule after a request is taken (edge k + 1): one set-up edge and S = N + F + 1
+//! divider steps for each of n1, n2 and n3, then one edge that publishes. The state
+//! register walks IDLE → SETUP → STEP ×S → SETUP → … → FINISH → IDLE.
+//!
+//! * **Divider** (restoring, radix 2, shared by the three divisions). For num/den with
+//!   num < den·2^N, the partial remainder R is preloaded with num >> N (< den), the low N
+//!   bits of num wait at the top of a shift register, and each step brings down one bit
+//!   (zeros once the N bits are used), so S steps give ⌊num·2^(F+1)/den⌋ without forming
+//!   num·2^(F+1): R needs P = 2N + 1 bits, and the trial value 2R + b its carry bit, as in
+//!   [`SeqDivider`](crate::SeqDivider). Then the magnitude (q + 1) >> 1 is the value
+//!   rounded to nearest, ties up. The algorithm is [`golden::estimator::speed_calc::long_division`].
+//! * **Multiplier** (shift-add, MSB first, during the first N + 1 steps of the n1 division).
+//!   With X = 2·Nep − 1 (odd, N + 1 bits): Ndt·(2·Nep − 1) = Ndt·X and
+//!   2·Nep·(Nep − 1) = Nep·(X − 1), where X − 1 is X with bit 0 cleared: both accumulate
+//!   over the bits of the same X, the first skipping bit 0. Both products fit P bits.
+//! * **Selection**: n2 and n3 use the high-speed forms when Nep ≥ 2·Ndt (compared as
+//!   2·Ndt ≤ Nep in P bits), else (Nep, Ndt + 1) and (2·Nep, 2·Ndt + 1).
+//!
+//! Widths never change inside an expression (rust-hdl emits literals 32 bits wide and
+//! casts as masks that Verilator flags), so the N-bit request is widened to P bits by a
+//! shift-in loop (wires after synthesis) and every constant is a `Constant` of its
+//! operand's width. The divider's comparison shifted ≥ den is read off the borrow of the
+//! one subtraction it needs (from the top bits of the operands and the difference), and
+//! rounding and sign share one adder: with h = q >> 1 and r = q & 1 the result is
+//! h + r, or −(h + r) = ~h + (1 − r), i.e. (h or ~h) + (r xor `negative`).
+//!
+//! # Resources
+//!
+//! Registers: the request (2N + 2), its working copy (2P + 1, of which the zero top bits
+//! are constant), the divider (3P + S), the multiplier (3P), staging and outputs (5S), a
+//! 6-bit step counter and 8 control bits. For N = 24, F = 16, yosys `synth_ice40` maps
+//! the block to 604 flip-flops, 792 LUT4 and 277 carry cells, and nextpnr places it on an
+//! iCE40 HX8K at about 71 MHz; the critical path is the divider's P-bit trial subtraction
+//! into the partial remainder (the 24-bit `encspeed_core` reaches 76 to 85 MHz there,
+//! depending on placement, see docs/benchmarks.md).
+
+use rust_hdl::prelude::*;
+
+/// Width of the step counter: it holds S − 1 ≤ 56.
+const COUNT_BITS: usize = 6;
+/// Width of the state and phase registers.
+const STATE_BITS: usize = 2;
+/// Width of the shift-amount constants (every shift is by less than 2^8).
+const SHIFT_BITS: usize = 8;
+
+/// The `SpeedCalc` type for counter width `$n` and `$f` fractional bits (literals or
+/// constants), with the derived widths filled in: `speed_calc_type!(24, 16)` is
+/// `SpeedCalc<24, 16, 49, 41>`.
+#[macro_export]
+macro_rules! speed_calc_type {
+    ($n:expr, $f:expr) => {
+        $crate::SpeedCalc<{ $n }, { $f }, { 2 * $n + 1 }, { $n + $f + 1 }>
+    };
+}
+
+/// Speed calculator: n1, n2, n3 of Rairán's estimator as signed Q(N).F fixed point.
+#[derive(LogicBlock)]
+pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: usize> {
+    /// Clock.
+    pub clock: Signal<In, Clock>,
+    /// Synchronous active-high reset (wins over `start`).
+    pub reset: Signal<In, Bit>,
+    /// Request a computation; latches `nep`, `ndt`, `negative`.
+    pub start: Signal<In, Bit>,
+    /// Nep1 (pulses).
+    pub nep: Signal<In, Bits<N>>,
+    /// Ndt1 (dt intervals).
+    pub ndt: Signal<In, Bits<N>>,
+    /// Direction: 1 = reverse (negative speeds).
+    pub negative: Signal<In, Bit>,
+    /// n1 = Nep/Ndt, Q(N).F two's complement, units of ω_lim.
+    pub speed_n1: Signal<Out, Bits<S>>,
+    /// n2, eq. (6), Q(N).F two's complement, units of ω_lim.
+    pub speed_n2: Signal<Out, Bits<S>>,
+    /// n3, eq. (11), Q(N).F two's complement, units of ω_lim.
+    pub speed_n3: Signal<Out, Bits<S>>,
+    /// One-cycle strobe: the three speeds were just written.
+    pub valid: Signal<Out, Bit>,
+    /// A computation runs or a request is pending.
+    pub busy: Signal<Out, Bit>,
+    // Request register.
+    req_nep: DFF<Bits<N>>,
+    req_ndt: DFF<Bits<N>>,
+    req_neg: DFF<Bit>,
+    pending: DFF<Bit>,
+    // Working copy of the request, widened to P bits.
+    w_nep: DFF<Bits<P>>,
+    w_ndt: DFF<Bits<P>>,
+    w_neg: DFF<Bit>,
+    /// Nep = 0: all speeds 0.
+    w_nep_zero: DFF<Bit>,
+    /// Ndt = 0: all speeds saturate (unless Nep = 0).
+    w_ndt_zero: DFF<Bit>,
+    // Sequencer.
+    state: DFF<Bits<STATE_BITS>>,
+    phase: DFF<Bits<STATE_BITS>>,
+    count: DFF<Bits<COUNT_BITS>>,
+    /// The multiplier steps (the first N + 1 steps of the n1 division).
+    mul_on: DFF<Bit>,
+    // Divider.
+    part_rem: DFF<Bits<P>>,
+    num_shift: DFF<Bits<P>>,
+    den: DFF<Bits<P>>,
+    quo: DFF<Bits<S>>,
+    // Multiplier.
+    mul_x: DFF<Bits<P>>,
+    acc_num: DFF<Bits<P>>,
+    acc_den: DFF<Bits<P>>,
+    // Results.
+    stage_n1: DFF<Bits<S>>,
+    stage_n2: DFF<Bits<S>>,
+    out_n1: DFF<Bits<S>>,
+    out_n2: DFF<Bits<S>>,
+    out_n3: DFF<Bits<S>>,
+    valid_reg: DFF<Bit>,
+    // Combinational.
+    req_nep_wide: Signal<Local, Bits<P>>,
+    req_ndt_wide: Signal<Local, Bits<P>>,
+    /// Nep ≥ 2·Ndt (n1 ≥ 2): the high-speed forms of n2 and n3.
+    high: Signal<Local, Bit>,
+    num_sel: Signal<Local, Bits<P>>,
+    den_sel: Signal<Local, Bits<P>>,
+    shifted: Signal<Local, Bits<P>>,
+    /// shifted − den (P bits, wrapping).
+    diff: Signal<Local, Bits<P>>,
+    shifted_msb: Signal<Local, Bit>,
+    den_msb: Signal<Local, Bit>,
+    /// shifted < den.
+    borrow: Signal<Local, Bit>,
+    fits: Signal<Local, Bit>,
+    next_rem: Signal<Local, Bits<P>>,
+    x_bit: Signal<Local, Bit>,
+    /// Quotient >> 1 (or a special value).
+    half: Signal<Local, Bits<S>>,
+    /// Quotient bit 0: the rounding increment.
+    round_bit: Signal<Local, Bit>,
+    addend: Signal<Local, Bits<S>>,
+    rounded: Signal<Local, Bits<S>>,
+    // Constants, each of the width it is used at.
+    n_zero: Constant<Bits<N>>,
+    p_zero: Constant<Bits<P>>,
+    p_one: Constant<Bits<P>>,
+    /// 2^(P − 1): the partial remainder's carry bit and the numerator bit brought down.
+    p_msb: Constant<Bits<P>>,
+    /// 2^N: the multiplier bit (X has N + 1 bits).
+    p_x_msb: Constant<Bits<P>>,
+    s_zero: Constant<Bits<S>>,
+    s_one: Constant<Bits<S>>,
+    /// 2^(N+F) − 1: the saturated magnitude.
+    s_max: Constant<Bits<S>>,
+    sh_one: Constant<Bits<SHIFT_BITS>>,
+    /// N: shift from num to its preloaded remainder num >> N.
+    sh_n: Constant<Bits<SHIFT_BITS>>,
+    /// P − N = N + 1: shift that puts the low N bits of num at the top.
+    sh_low: Constant<Bits<SHIFT_BITS>>,
+    count_zero: Constant<Bits<COUNT_BITS>>,
+    count_one: Constant<Bits<COUNT_BITS>>,
+    /// S − 1: loaded at each set-up.
+    count_first: Constant<Bits<COUNT_BITS>>,
+    /// S − N − 1 = F: the count of the last multiplier step.
+    count_mul_last: Constant<Bits<COUNT_BITS>>,
+    st_idle: Constant<Bits<STATE_BITS>>,
+    st_setup: Constant<Bits<STATE_BITS>>,
+    st_step: Constant<Bits<STATE_BITS>>,
+    st_finish: Constant<Bits<STATE_BITS>>,
+    ph_one: Constant<Bits<STATE_BITS>>,
+    ph_two: Constant<Bits<STATE_BITS>>,
+    ph_three: Constant<Bits<STATE_BITS>>,
+}
+
+impl<const N: usize, const F: usize, const P: usize, const S: usize> SpeedCalc<N, F, P, S> {
+    const PARAMS_OK: () = {
+        assert!(N >= 8 && N <= 32, "SpeedCalc supports N in 8..=32");
+        assert!(F <= 24, "SpeedCalc supports F in 0..=24");
+        assert!(P == 2 * N + 1, "SpeedCalc needs P = 2N + 1");
+        assert!(S == N + F + 1, "SpeedCalc needs S = N + F + 1");
+    };
+}
+
+impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
+    for SpeedCalc<N, F, P, S>
+{
+    fn default() -> Self {
+        let () = Self::PARAMS_OK;
+        let c = |v: usize| -> u64 { v.try_into().unwrap() };
+        Self {
+            clock: Default::default(),
+            reset: Default::default(),
+            start: Default::default(),
+            nep: Default::default(),
+            ndt: Default::default(),
+            negative: Default::default(),
+            speed_n1: Default::default(),
+            speed_n2: Default::default(),
+            speed_n3: Default::default(),
+            valid: Default::default(),
+            busy: Default::default(),
+            req_nep: Default::default(),
+            req_ndt: Default::default(),
+            req_neg: Default::default(),
+            pending: Default::default(),
+            w_nep: Default::default(),
+            w_ndt: Default::default(),
+            w_neg: Default::default(),
+            w_nep_zero: Default::default(),
+            w_ndt_zero: Default::default(),
+            state: Default::default(),
+            phase: Default::default(),
+            count: Default::default(),
+            mul_on: Default::default(),
+            part_rem: Default::default(),
+            num_shift: Default::default(),
+            den: Default::default(),
+            quo: Default::default(),
+            mul_x: Default::default(),
+            acc_num: Default::default(),
+            acc_den: Default::default(),
+            stage_n1: Default::default(),
+            stage_n2: Default::default(),
+            out_n1: Default::default(),
+            out_n2: Default::default(),
+            out_n3: Default::default(),
+            valid_reg: Default::default(),
+            req_nep_wide: Default::default(),
+            req_ndt_wide: Default::default(),
+            high: Default::default(),
+            num_sel: Default::default(),
+            den_sel: Default::default(),
+            shifted: Default::default(),
+            diff: Default::default(),
+            shifted_msb: Default::default(),
+            den_msb: Default::default(),
+            borrow: Default::default(),
+            fits: Default::default(),
+            next_rem: Default::default(),
+            x_bit: Default::default(),
+            half: Default::default(),
+            round_bit: Default::default(),
+            addend: Default::default(),
+            rounded: Default::default(),
+            n_zero: Constant::new(0.into()),
+            p_zero: Constant::new(0.into()),
+            p_one: Constant::new(1.into()),
+            // P can be 65: build 2^(P−1) bit by bit rather than from a u64.
+            p_msb: Constant::new(Bits::<P>::default().replace_bit(P - 1, true)),
+            p_x_msb: Constant::new(Bits::<P>::default().replace_bit(N, true)),
+            s_zero: Constant::new(0.into()),
+            s_one: Constant::new(1.into()),
+            s_max: Constant::new(((1u64 << (N + F)) - 1).into()),
+            sh_one: Constant::new(1.into()),
+            sh_n: Constant::new(c(N).into()),
+            sh_low: Constant::new(c(P - N).into()),
+            count_zero: Constant::new(0.into()),
+            count_one: Constant::new(1.into()),
+            count_first: Constant::new(c(S - 1).into()),
+            count_mul_last: Constant::new(c(S - N - 1).into()),
+            st_idle: Constant::new(0.into()),
+            st_setup: Constant::new(1.into()),
+            st_step: Constant::new(2.into()),
+            st_finish: Constant::new(3.into()),
+            ph_one: Constant::new(1.into()),
+            ph_two: Constant::new(2.into()),
+            ph_three: Constant::new(3.into()),
+        }
+    }
+}
+
+impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
+    for SpeedCalc<N, F, P, S>
+{
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, req_nep, req_ndt, req_neg, pending, w_nep, w_ndt, w_neg, w_nep_zero,
+            w_ndt_zero, state, phase, count, mul_on, part_rem, num_shift, den, quo, mul_x, acc_num,
+            acc_den, stage_n1, stage_n2, out_n1, out_n2, out_n3, valid_reg
+        );
+        // Widen the request to P bits: shift its bits in at the top, LSB first, then move
+        // them down (a cast would be emitted as a mask of another width).
+        self.req_nep_wide.next = self.p_zero.val();
+        self.req_ndt_wide.next = self.p_zero.val();
+        for i in 0..N {
+            if self.req_nep.q.val().get_bit(i) {
+                self.req_nep_wide.next =
+                    (self.req_nep_wide.val() >> self.sh_one.val()) | self.p_msb.val();
+            } else {
+                self.req_nep_wide.next = self.req_nep_wide.val() >> self.sh_one.val();
+            }
+            if self.req_ndt.q.val().get_bit(i) {
+                self.req_ndt_wide.next =
+                    (self.req_ndt_wide.val() >> self.sh_one.val()) | self.p_msb.val();
+            } else {
+                self.req_ndt_wide.next = self.req_ndt_wide.val() >> self.sh_one.val();
+            }
+        }
+        self.req_nep_wide.next = self.req_nep_wide.val() >> self.sh_low.val();
+        self.req_ndt_wide.next = self.req_ndt_wide.val() >> self.sh_low.val();
+
+        // Operands of the next division.
+        self.high.next = (self.w_ndt.q.val() << self.sh_one.val()) <= self.w_nep.q.val();
+        self.num_sel.next = self.w_nep.q.val();
+        self.den_sel.next = self.w_ndt.q.val();
+        if self.phase.q.val() == self.ph_two.val() {
+            if self.high.val() {
+                self.num_sel.next = self.w_nep.q.val() - self.p_one.val();
+            } else {
+                self.den_sel.next = self.w_ndt.q.val() + self.p_one.val();
+            }
+        }
+        if self.phase.q.val() == self.ph_three.val() {
+            if self.high.val() {
+                self.num_sel.next = self.acc_num.q.val();
+                self.den_sel.next = self.acc_den.q.val();
+            } else {
+                self.num_sel.next = self.w_nep.q.val() << self.sh_one.val();
+                self.den_sel.next = (self.w_ndt.q.val() << self.sh_one.val()) | self.p_one.val();
+            }
+        }
+
+        // One restoring step: bring down the top bit of num_shift, subtract if it fits.
+        self.shifted.next = self.part_rem.q.val() << self.sh_one.val();
+        if (self.num_shift.q.val() & self.p_msb.val()) != self.p_zero.val() {
+            self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.p_one.val();
+        }
+        // shifted ≥ den from the borrow of shifted − den, read off the top bits of the
+        // operands and the difference: one subtractor, no separate comparator.
+        self.diff.next = self.shifted.val() - self.den.q.val();
+        self.shifted_msb.next = (self.shifted.val() & self.p_msb.val()) != self.p_zero.val();
+        self.den_msb.next = (self.den.q.val() & self.p_msb.val()) != self.p_zero.val();
+        self.borrow.next = ((!self.shifted_msb.val()) & self.den_msb.val())
+            | ((!(self.shifted_msb.val() ^ self.den_msb.val()))
+                & ((self.diff.val() & self.p_msb.val()) != self.p_zero.val()));
+        self.fits.next = ((self.part_rem.q.val() & self.p_msb.val()) != self.p_zero.val())
+            | (!self.borrow.val());
+        self.next_rem.next = self.shifted.val();
+        if self.fits.val() {
+            self.next_rem.next = self.diff.val();
+        }
+        self.x_bit.next = (self.mul_x.q.val() & self.p_x_msb.val()) != self.p_zero.val();
+
+        // Round and sign with one adder. With q the last quotient, h = q >> 1 and r = q & 1,
+        // the magnitude is h + r, and its negation ~(h + r) + 1 = ~h + (1 − r): so the
+        // result is (h, or ~h if negative) + (r xor negative). The special cases replace
+        // h and r (Ndt = 0: h = 2^(N+F) − 1, r = 0; Nep = 0: h = 0, r = 0).
+        self.half.next = self.quo.q.val() >> self.sh_one.val();
+        self.round_bit.next = (self.quo.q.val() & self.s_one.val()) != self.s_zero.val();
+        if self.w_ndt_zero.q.val() {
+            self.half.next = self.s_max.val();
+            self.round_bit.next = false;
+        }
+        if self.w_nep_zero.q.val() {
+            self.half.next = self.s_zero.val();
+            self.round_bit.next = false;
+        }
+        self.addend.next = self.half.val();
+        if self.w_neg.q.val() {
+            self.addend.next = !self.half.val();
+        }
+        self.rounded.next = self.addend.val();
+        if self.round_bit.val() ^ self.w_neg.q.val() {
+            self.rounded.next = self.addend.val() + self.s_one.val();
+        }
+
+        self.valid_reg.d.next = false;
+        if (self.state.q.val() == self.st_idle.val()) & self.pending.q.val() {
+            self.w_nep.d.next = self.req_nep_wide.val();
+            self.w_ndt.d.next = self.req_ndt_wide.val();
+            self.w_neg.d.next = self.req_neg.q.val();
+            self.w_nep_zero.d.next = self.req_nep.q.val() == self.n_zero.val();
+            self.w_ndt_zero.d.next = self.req_ndt.q.val() == self.n_zero.val();
+            self.pending.d.next = false;
+            self.phase.d.next = self.ph_one.val();
+            self.state.d.next = self.st_setup.val();
+        }
+        if self.state.q.val() == self.st_setup.val() {
+            self.part_rem.d.next = self.num_sel.val() >> self.sh_n.val();
+            self.num_shift.d.next = self.num_sel.val() << self.sh_low.val();
+            self.den.d.next = self.den_sel.val();
+            self.quo.d.next = self.s_zero.val();
+            self.count.d.next = self.count_first.val();
+            self.state.d.next = self.st_step.val();
+            if self.phase.q.val() == self.ph_one.val() {
+                self.mul_x.d.next = (self.w_nep.q.val() << self.sh_one.val()) - self.p_one.val();
+                self.acc_num.d.next = self.p_zero.val();
+                self.acc_den.d.next = self.p_zero.val();
+                self.mul_on.d.next = true;
+            }
+            if self.phase.q.val() == self.ph_two.val() {
+                self.stage_n1.d.next = self.rounded.val();
+            }
+            if self.phase.q.val() == self.ph_three.val() {
+                self.stage_n2.d.next = self.rounded.val();
+            }
+        }
+        if self.state.q.val() == self.st_step.val() {
+            self.part_rem.d.next = self.next_rem.val();
+            self.num_shift.d.next = self.num_shift.q.val() << self.sh_one.val();
+            self.quo.d.next = self.quo.q.val() << self.sh_one.val();
+            if self.fits.val() {
+                self.quo.d.next = (self.quo.q.val() << self.sh_one.val()) | self.s_one.val();
+            }
+            self.count.d.next = self.count.q.val() - self.count_one.val();
+            if self.mul_on.q.val() {
+                self.mul_x.d.next = self.mul_x.q.val() << self.sh_one.val();
+                self.acc_num.d.next = self.acc_num.q.val() << self.sh_one.val();
+                self.acc_den.d.next = self.acc_den.q.val() << self.sh_one.val();
+                if self.x_bit.val() {
+                    self.acc_den.d.next =
+                        (self.acc_den.q.val() << self.sh_one.val()) + self.w_ndt.q.val();
+                    if self.count.q.val() != self.count_mul_last.val() {
+                        self.acc_num.d.next =
+                            (self.acc_num.q.val() << self.sh_one.val()) + self.w_nep.q.val();
+                    }
+                }
+                if self.count.q.val() == self.count_mul_last.val() {
+                    self.mul_on.d.next = false;
+                }
+            }
+            if self.count.q.val() == self.count_zero.val() {
+                self.state.d.next = self.st_setup.val();
+                self.phase.d.next = self.phase.q.val() + self.ph_one.val();
+                if self.phase.q.val() == self.ph_three.val() {
+                    self.state.d.next = self.st_finish.val();
+                }
+            }
+        }
+        if self.state.q.val() == self.st_finish.val() {
+            self.out_n1.d.next = self.stage_n1.q.val();
+            self.out_n2.d.next = self.stage_n2.q.val();
+            self.out_n3.d.next = self.rounded.val();
+            self.valid_reg.d.next = true;
+            self.state.d.next = self.st_idle.val();
+        }
+        if self.start.val() {
+            self.req_nep.d.next = self.nep.val();
+            self.req_ndt.d.next = self.ndt.val();
+            self.req_neg.d.next = self.negative.val();
+            self.pending.d.next = true;
+        }
+        if self.reset.val() {
+            self.pending.d.next = false;
+            self.mul_on.d.next = false;
+            self.state.d.next = self.st_idle.val();
+            self.valid_reg.d.next = false;
+            self.out_n1.d.next = self.s_zero.val();
+            self.out_n2.d.next = self.s_zero.val();
+            self.out_n3.d.next = self.s_zero.val();
+        }
+        self.speed_n1.next = self.out_n1.q.val();
+        self.speed_n2.next = self.out_n2.q.val();
+        self.speed_n3.next = self.out_n3.q.val();
+        self.valid.next = self.valid_reg.q.val();
+        self.busy.next = self.pending.q.val() | (self.state.q.val() != self.st_idle.val());
+    }
+}
+
+/// The Verilog of a `SpeedCalc<N, F, P, S>` with its top module named `module_name`.
+pub fn speed_calc_verilog<const N: usize, const F: usize, const P: usize, const S: usize>(
+    module_name: &str,
+) -> String {
+    crate::verilog::default_block_verilog::<SpeedCalc<N, F, P, S>>(module_name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    type Calc = crate::speed_calc_type!(24, 16);
+
+    fn step(uut: &mut Calc, start: bool, nep: u64, ndt: u64, negative: bool) {
+        uut.reset.next = false;
+        uut.start.next = start;
+        uut.nep.next = nep.into();
+        uut.ndt.next = ndt.into();
+        uut.negative.next = negative;
+        uut.clock.next = Clock { clk: false };
+        assert!(simulate(uut, 100));
+        uut.clock.next = Clock { clk: true };
+        assert!(simulate(uut, 100));
+    }
+
+    #[test]
+    fn n3_of_4_over_1_by_hand_in_128_cycles() {
+        let mut uut = Calc::default();
+        uut.connect_all();
+        step(&mut uut, true, 4, 1, false);
+        // Busy after edges 0 (the start) to 127, valid after edge 128.
+        for k in 1..=128 {
+            assert!(uut.busy.val() && !uut.valid.val(), "after edge {}", k - 1);
+            step(&mut uut, false, 0, 0, false);
+        }
+        assert!(uut.valid.val() && !uut.busy.val());
+        // 4, 3 and 24/7 with 16 fractional bits: 262144, 196608, 224694.857… → 224695.
+        assert_eq!(uut.speed_n1.val().to_u64(), 262_144);
+        assert_eq!(uut.speed_n2.val().to_u64(), 196_608);
+        assert_eq!(uut.speed_n3.val().to_u64(), 224_695);
+    }
+
+    #[test]
+    fn synthesises() {
+        let mut uut = Calc::default();
+        uut.connect_all();
+        yosys_validate("encspeed_speed_calc", &generate_verilog(&uut)).unwrap();
+    }
+
+    #[test]
+    fn verilator_lint_is_clean() {
+        let lint = |v: String| crate::test_support::verilator_lint("speed_calc", &v);
+        lint(speed_calc_verilog::<8, 0, 17, 9>("speed_calc"));
+        lint(speed_calc_verilog::<8, 8, 17, 17>("speed_calc"));
+        lint(speed_calc_verilog::<16, 16, 33, 33>("speed_calc"));
+        lint(speed_calc_verilog::<24, 16, 49, 41>("speed_calc"));
+        lint(speed_calc_verilog::<32, 24, 65, 57>("speed_calc"));
+    }
+}

@@ -1,0 +1,186 @@
+//! Programmable glitch filter of one synchronised encoder channel, with a counter of
+//! rejected pulses. Bit-true model: [`golden::frontend::GlitchFilter`].
+//!
+//! A new level passes to `level_out` only after it has been sampled `cfg_filter` = L
+//! consecutive cycles; a pulse shorter than that is dropped and counted in `glitches`. Per
+//! clock edge (`run` counts the cycles in which the input has differed from `level_out`):
+//! - input ≠ `level_out`: if run + 1 ≥ L then `level_out` = input and run = 0, else run + 1;
+//! - input = `level_out`: if run ≠ 0, `glitches` + 1 (saturating at 2^G − 1); run = 0.
+//!
+//! Ports: `level_in` (synchronised channel), `cfg_filter[F-1:0]` (L; 0 and 1 pass every
+//! change), `level_out` (filtered level, a register), `glitches[G-1:0]` (rejected pulses
+//! since reset, a register).
+//!
+//! Latency: a level held for at least max(L, 1) cycles shows on `level_out` max(L, 1) clock
+//! edges after the first edge that sampled it (L ≤ 1: that same edge, i.e. one register).
+//! Since run + 1 < L ≤ 2^F − 1 whenever run is incremented, run never overflows.
+//!
+//! Reset (synchronous, active high): `level_out` = 0, run = 0, `glitches` = 0. A channel that
+//! is high at reset therefore reaches `level_out` after max(L, 1) edges: consumers must not
+//! take that for a transition (see `golden::frontend`, start-up).
+
+use rust_hdl::prelude::*;
+
+/// Glitch filter with an F-bit length `cfg_filter` and a G-bit glitch counter.
+#[derive(LogicBlock)]
+pub struct GlitchFilter<const F: usize, const G: usize> {
+    /// Clock of the core.
+    pub clock: Signal<In, Clock>,
+    /// Synchronous active-high reset.
+    pub reset: Signal<In, Bit>,
+    /// Channel level, synchronised to `clock`.
+    pub level_in: Signal<In, Bit>,
+    /// L: cycles a new level must be seen before it passes.
+    pub cfg_filter: Signal<In, Bits<F>>,
+    /// Filtered level.
+    pub level_out: Signal<Out, Bit>,
+    /// Rejected pulses since reset (saturating).
+    pub glitches: Signal<Out, Bits<G>>,
+    /// One cycle: a pulse was rejected at the last edge (also once `glitches` saturates).
+    pub rejected: Signal<Out, Bit>,
+    filtered: DFF<Bit>,
+    rejected_reg: DFF<Bit>,
+    pub(crate) run: DFF<Bits<F>>,
+    glitch_count: DFF<Bits<G>>,
+    differs: Signal<Local, Bit>,
+    run_next: Signal<Local, Bits<F>>,
+    run_zero: Constant<Bits<F>>,
+    run_one: Constant<Bits<F>>,
+    count_zero: Constant<Bits<G>>,
+    count_one: Constant<Bits<G>>,
+    count_max: Constant<Bits<G>>,
+}
+
+impl<const F: usize, const G: usize> Default for GlitchFilter<F, G> {
+    fn default() -> Self {
+        assert!(
+            (1..=32).contains(&F) && (1..=32).contains(&G),
+            "widths 1..=32"
+        );
+        Self {
+            clock: Default::default(),
+            reset: Default::default(),
+            level_in: Default::default(),
+            cfg_filter: Default::default(),
+            level_out: Default::default(),
+            glitches: Default::default(),
+            rejected: Default::default(),
+            filtered: Default::default(),
+            rejected_reg: Default::default(),
+            run: Default::default(),
+            glitch_count: Default::default(),
+            differs: Default::default(),
+            run_next: Default::default(),
+            run_zero: Constant::new(0.into()),
+            run_one: Constant::new(1.into()),
+            count_zero: Constant::new(0.into()),
+            count_one: Constant::new(1.into()),
+            count_max: Constant::new(((1u64 << G) - 1).into()),
+        }
+    }
+}
+
+impl<const F: usize, const G: usize> Logic for GlitchFilter<F, G> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, filtered, run, glitch_count, rejected_reg);
+        // The input differs from the filtered level.
+        self.differs.next = self.level_in.val() ^ self.filtered.q.val();
+        self.run_next.next = self.run.q.val() + self.run_one.val();
+        self.run.d.next = self.run_zero.val();
+        self.rejected_reg.d.next = false;
+        if self.differs.val() {
+            if self.run_next.val() >= self.cfg_filter.val() {
+                self.filtered.d.next = self.level_in.val();
+            } else {
+                self.run.d.next = self.run_next.val();
+            }
+        } else if self.run.q.val() != self.run_zero.val() {
+            self.rejected_reg.d.next = true;
+            if self.glitch_count.q.val() != self.count_max.val() {
+                self.glitch_count.d.next = self.glitch_count.q.val() + self.count_one.val();
+            }
+        }
+        if self.reset.val() {
+            self.filtered.d.next = false;
+            self.run.d.next = self.run_zero.val();
+            self.glitch_count.d.next = self.count_zero.val();
+            self.rejected_reg.d.next = false;
+        }
+        self.level_out.next = self.filtered.q.val();
+        self.rejected.next = self.rejected_reg.q.val();
+        self.glitches.next = self.glitch_count.q.val();
+    }
+}
+
+/// The Verilog of a [`GlitchFilter`], top module named `module_name`.
+pub fn glitch_filter_verilog<const F: usize, const G: usize>(module_name: &str) -> String {
+    crate::verilog::default_block_verilog::<GlitchFilter<F, G>>(module_name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_support::verilator_lint;
+
+    /// Reset at edge 0, then `input` with L = `l`: (level_out, glitches) after each edge.
+    fn run(l: u64, input: &[u8]) -> Vec<(u8, u64)> {
+        let mut uut = GlitchFilter::<8, 2>::default();
+        uut.connect_all();
+        let mut out = vec![];
+        for k in 0..=input.len() {
+            uut.reset.next = k == 0;
+            uut.level_in.next = k > 0 && input[k - 1] == 1;
+            uut.cfg_filter.next = l.into();
+            uut.clock.next = Clock { clk: false };
+            assert!(simulate(&mut uut, 100));
+            uut.clock.next = Clock { clk: true };
+            assert!(simulate(&mut uut, 100));
+            if k > 0 {
+                out.push((u8::from(uut.level_out.val()), uut.glitches.val().to_u64()));
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn rejects_short_pulses_and_passes_long_ones() {
+        // L = 4: a 3-cycle pulse (run 1, 2, 3) is rejected and counted when it ends.
+        assert_eq!(
+            run(4, &[1, 1, 1, 0, 0]),
+            [(0, 0), (0, 0), (0, 0), (0, 1), (0, 1)]
+        );
+        // L = 3: the same pulse passes after its 3rd sample and falls 3 edges after it ends.
+        assert_eq!(
+            run(3, &[1, 1, 1, 0, 0, 0]),
+            [(0, 0), (0, 0), (1, 0), (1, 0), (1, 0), (0, 0)]
+        );
+        // L = 0: every change at the next edge. L = 2 with single-cycle pulses: the 2-bit
+        // counter saturates at 3.
+        assert_eq!(run(0, &[1, 0, 1]), [(1, 0), (0, 0), (1, 0)]);
+        let counts: Vec<u64> = run(2, &[1, 0, 1, 0, 1, 0, 1, 0, 1, 0])
+            .iter()
+            .map(|o| o.1)
+            .collect();
+        assert_eq!(counts, [0, 1, 1, 2, 2, 3, 3, 3, 3, 3]);
+    }
+
+    #[test]
+    fn synthesises() {
+        let mut uut = GlitchFilter::<8, 8>::default();
+        uut.connect_all();
+        yosys_validate("encspeed_glitch_filter", &generate_verilog(&uut)).unwrap();
+    }
+
+    #[test]
+    fn verilator_lint_is_clean() {
+        verilator_lint(
+            "glitch_filter",
+            &glitch_filter_verilog::<8, 16>("glitch_filter"),
+        );
+        verilator_lint(
+            "glitch_filter",
+            &glitch_filter_verilog::<1, 1>("glitch_filter"),
+        );
+    }
+}

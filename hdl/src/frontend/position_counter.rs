@@ -1,0 +1,363 @@
+//! Position counter modulo the counts per revolution, with index (Z) reset/latch and a
+//! check of the count of every revolution. Bit-true model:
+//! [`golden::frontend::PositionCounter`].
+//!
+//! Per clock edge (R = `counts_per_rev`, 0 standing for 2^C; limit = R − 1 in C bits):
+//! 1. Index: rise = z_delay ∧ ¬z_prev, where z_delay is `z` one edge ago and z_prev two. The
+//!    extra delay matches the decoder's latency: `z` is taken in the timing of the decoder's
+//!    `a`/`b` inputs, so the index edge and the step of the same encoder transition are
+//!    processed at the same edge. Both flops reset high: no index edge is seen before two
+//!    real samples of `z` have been compared.
+//! 2. Stepped position p: forward from p ≥ limit to 0, else p + 1; backward from p = 0 or
+//!    p > limit (R lowered at run time) to limit, else p − 1. The wrap is the definition of
+//!    the angle, not an overflow.
+//! 3. On rise: `cfg_z_mode` 2 or 3 latches p (this edge's step included) into `z_latch`;
+//!    `cfg_z_mode` 1 or 3 sets the position to 0 instead of p; `index` is high after the edge.
+//! 4. Revolution check. The steps since the last index edge are counted (saturating one
+//!    past 2^C: a C-bit count of steps − 1 and an overflow bit) with the direction of the
+//!    first and a "mixed" bit; the step of an index edge's cycle belongs to the interval that
+//!    edge closes. At a rise after an earlier one (`armed`), with `cfg_z_mode` ≠ 0, an
+//!    interval with steps of one direction only whose count is not R sets `rev_error`
+//!    (sticky) and increments `rev_error_count` (saturating). An interval with a reversal is
+//!    not checked (a shaft swinging back across the index), nor one without steps (index
+//!    noise at rest); for a fault-free encoder a one-direction interval always has exactly
+//!    R steps, because the index rises on entering the Z window from either side.
+//!
+//! Ports: `step`, `forward` (from the decoder), `z` (filtered index level, one cycle ahead
+//! of `step`), `counts_per_rev[C-1:0]`, `cfg_z_mode[1:0]` (0 ignore, 1 reset, 2 latch,
+//! 3 latch then reset). Registered outputs: `position[C-1:0]`, `z_latch[C-1:0]`, `index`
+//! (one cycle per index edge processed), `rev_error` (sticky), `rev_error_count[G-1:0]`.
+//!
+//! Latency: a step is in `position` after the edge that samples it; an index level change
+//! on `z` acts one edge later than a step sampled with it. Reset (synchronous, active
+//! high): position, latch, flags and counters 0; z_delay and z_prev 1.
+
+use rust_hdl::prelude::*;
+
+/// Position counter with C-bit position and G-bit revolution-error counter.
+#[derive(LogicBlock)]
+pub struct PositionCounter<const C: usize, const G: usize> {
+    /// Clock of the core.
+    pub clock: Signal<In, Clock>,
+    /// Synchronous active-high reset.
+    pub reset: Signal<In, Bit>,
+    /// A step of the decoder.
+    pub step: Signal<In, Bit>,
+    /// The step is forward.
+    pub forward: Signal<In, Bit>,
+    /// Filtered index level, in the timing of the decoder's inputs.
+    pub z: Signal<In, Bit>,
+    /// Counts per revolution R (0 stands for 2^C).
+    pub counts_per_rev: Signal<In, Bits<C>>,
+    /// 0 ignore Z, 1 reset on Z, 2 latch on Z, 3 latch then reset.
+    pub cfg_z_mode: Signal<In, Bits<2>>,
+    /// Position, 0..R.
+    pub position: Signal<Out, Bits<C>>,
+    /// Position latched at the last index edge.
+    pub z_latch: Signal<Out, Bits<C>>,
+    /// One cycle per index edge processed.
+    pub index: Signal<Out, Bit>,
+    /// A checked revolution had a count other than R (sticky).
+    pub rev_error: Signal<Out, Bit>,
+    /// Revolutions with a wrong count (saturating).
+    pub rev_error_count: Signal<Out, Bits<G>>,
+    /// One cycle: the last edge found a bad revolution.
+    pub rev_fault: Signal<Out, Bit>,
+    pub(crate) position_reg: DFF<Bits<C>>,
+    latch_reg: DFF<Bits<C>>,
+    index_reg: DFF<Bit>,
+    z_delay: DFF<Bit>,
+    z_prev: DFF<Bit>,
+    armed: DFF<Bit>,
+    rev_any: DFF<Bit>,
+    rev_more: DFF<Bits<C>>,
+    rev_over: DFF<Bit>,
+    rev_fwd: DFF<Bit>,
+    rev_mixed: DFF<Bit>,
+    error_reg: DFF<Bit>,
+    error_count: DFF<Bits<G>>,
+    fault_reg: DFF<Bit>,
+    limit: Signal<Local, Bits<C>>,
+    stepped: Signal<Local, Bits<C>>,
+    rise: Signal<Local, Bit>,
+    any_now: Signal<Local, Bit>,
+    more_now: Signal<Local, Bits<C>>,
+    over_now: Signal<Local, Bit>,
+    fwd_now: Signal<Local, Bit>,
+    mixed_now: Signal<Local, Bit>,
+    bad: Signal<Local, Bit>,
+    pos_zero: Constant<Bits<C>>,
+    pos_one: Constant<Bits<C>>,
+    pos_max: Constant<Bits<C>>,
+    mode_ignore: Constant<Bits<2>>,
+    mode_reset: Constant<Bits<2>>,
+    mode_latch: Constant<Bits<2>>,
+    mode_both: Constant<Bits<2>>,
+    count_zero: Constant<Bits<G>>,
+    count_one: Constant<Bits<G>>,
+    count_max: Constant<Bits<G>>,
+}
+
+impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
+    fn default() -> Self {
+        assert!(
+            (1..=32).contains(&C) && (1..=32).contains(&G),
+            "widths 1..=32"
+        );
+        use golden::frontend::{Z_MODE_IGNORE, Z_MODE_LATCH, Z_MODE_LATCH_RESET, Z_MODE_RESET};
+        Self {
+            clock: Default::default(),
+            reset: Default::default(),
+            step: Default::default(),
+            forward: Default::default(),
+            z: Default::default(),
+            counts_per_rev: Default::default(),
+            cfg_z_mode: Default::default(),
+            position: Default::default(),
+            z_latch: Default::default(),
+            index: Default::default(),
+            rev_error: Default::default(),
+            rev_error_count: Default::default(),
+            rev_fault: Default::default(),
+            position_reg: Default::default(),
+            latch_reg: Default::default(),
+            index_reg: Default::default(),
+            z_delay: Default::default(),
+            z_prev: Default::default(),
+            armed: Default::default(),
+            rev_any: Default::default(),
+            rev_more: Default::default(),
+            rev_over: Default::default(),
+            rev_fwd: Default::default(),
+            rev_mixed: Default::default(),
+            error_reg: Default::default(),
+            error_count: Default::default(),
+            fault_reg: Default::default(),
+            limit: Default::default(),
+            stepped: Default::default(),
+            rise: Default::default(),
+            any_now: Default::default(),
+            more_now: Default::default(),
+            over_now: Default::default(),
+            fwd_now: Default::default(),
+            mixed_now: Default::default(),
+            bad: Default::default(),
+            pos_zero: Constant::new(0.into()),
+            pos_one: Constant::new(1.into()),
+            pos_max: Constant::new(((1u64 << C) - 1).into()),
+            mode_ignore: Constant::new(u64::from(Z_MODE_IGNORE).into()),
+            mode_reset: Constant::new(u64::from(Z_MODE_RESET).into()),
+            mode_latch: Constant::new(u64::from(Z_MODE_LATCH).into()),
+            mode_both: Constant::new(u64::from(Z_MODE_LATCH_RESET).into()),
+            count_zero: Constant::new(0.into()),
+            count_one: Constant::new(1.into()),
+            count_max: Constant::new(((1u64 << G) - 1).into()),
+        }
+    }
+}
+
+impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clock,
+            position_reg,
+            latch_reg,
+            index_reg,
+            z_delay,
+            z_prev,
+            armed,
+            rev_any,
+            rev_more,
+            rev_over,
+            rev_fwd,
+            rev_mixed,
+            error_reg,
+            error_count,
+            fault_reg
+        );
+        // R − 1 in C bits (R = 0 gives 2^C − 1).
+        self.limit.next = self.counts_per_rev.val() - self.pos_one.val();
+        self.rise.next = self.z_delay.q.val() & !self.z_prev.q.val();
+        self.z_delay.d.next = self.z.val();
+        self.z_prev.d.next = self.z_delay.q.val();
+
+        // The stepped position, modulo R.
+        self.stepped.next = self.position_reg.q.val();
+        if self.step.val() & self.forward.val() {
+            if self.position_reg.q.val() >= self.limit.val() {
+                self.stepped.next = self.pos_zero.val();
+            } else {
+                self.stepped.next = self.position_reg.q.val() + self.pos_one.val();
+            }
+        }
+        if self.step.val() & !self.forward.val() {
+            if (self.position_reg.q.val() == self.pos_zero.val())
+                | (self.position_reg.q.val() > self.limit.val())
+            {
+                self.stepped.next = self.limit.val();
+            } else {
+                self.stepped.next = self.position_reg.q.val() - self.pos_one.val();
+            }
+        }
+
+        // The interval since the last index edge, this cycle's step included: count − 1 in
+        // `more` (with `over` once it passes 2^C − 1), direction of the first step, mixed.
+        self.any_now.next = self.rev_any.q.val();
+        self.more_now.next = self.rev_more.q.val();
+        self.over_now.next = self.rev_over.q.val();
+        self.fwd_now.next = self.rev_fwd.q.val();
+        self.mixed_now.next = self.rev_mixed.q.val();
+        if self.step.val() {
+            if self.rev_any.q.val() {
+                if self.rev_more.q.val() == self.pos_max.val() {
+                    self.over_now.next = true;
+                } else {
+                    self.more_now.next = self.rev_more.q.val() + self.pos_one.val();
+                }
+                if self.forward.val() ^ self.rev_fwd.q.val() {
+                    self.mixed_now.next = true;
+                }
+            } else {
+                self.any_now.next = true;
+                self.more_now.next = self.pos_zero.val();
+                self.over_now.next = false;
+                self.fwd_now.next = self.forward.val();
+                self.mixed_now.next = false;
+            }
+        }
+        // A checked interval whose count is not R.
+        self.bad.next = self.armed.q.val()
+            & (self.cfg_z_mode.val() != self.mode_ignore.val())
+            & self.any_now.val()
+            & !self.mixed_now.val()
+            & (self.over_now.val() | (self.more_now.val() != self.limit.val()));
+
+        self.position_reg.d.next = self.stepped.val();
+        self.index_reg.d.next = self.rise.val();
+        self.fault_reg.d.next = false;
+        self.rev_any.d.next = self.any_now.val();
+        self.rev_more.d.next = self.more_now.val();
+        self.rev_over.d.next = self.over_now.val();
+        self.rev_fwd.d.next = self.fwd_now.val();
+        self.rev_mixed.d.next = self.mixed_now.val();
+        if self.rise.val() {
+            if (self.cfg_z_mode.val() == self.mode_latch.val())
+                | (self.cfg_z_mode.val() == self.mode_both.val())
+            {
+                self.latch_reg.d.next = self.stepped.val();
+            }
+            if (self.cfg_z_mode.val() == self.mode_reset.val())
+                | (self.cfg_z_mode.val() == self.mode_both.val())
+            {
+                self.position_reg.d.next = self.pos_zero.val();
+            }
+            if self.bad.val() {
+                self.error_reg.d.next = true;
+                self.fault_reg.d.next = true;
+                if self.error_count.q.val() != self.count_max.val() {
+                    self.error_count.d.next = self.error_count.q.val() + self.count_one.val();
+                }
+            }
+            self.armed.d.next = true;
+            self.rev_any.d.next = false;
+            self.rev_more.d.next = self.pos_zero.val();
+            self.rev_over.d.next = false;
+            self.rev_mixed.d.next = false;
+        }
+        if self.reset.val() {
+            self.position_reg.d.next = self.pos_zero.val();
+            self.latch_reg.d.next = self.pos_zero.val();
+            self.index_reg.d.next = false;
+            self.z_delay.d.next = true;
+            self.z_prev.d.next = true;
+            self.armed.d.next = false;
+            self.rev_any.d.next = false;
+            self.rev_more.d.next = self.pos_zero.val();
+            self.rev_over.d.next = false;
+            self.rev_fwd.d.next = false;
+            self.rev_mixed.d.next = false;
+            self.error_reg.d.next = false;
+            self.error_count.d.next = self.count_zero.val();
+            self.fault_reg.d.next = false;
+        }
+        self.position.next = self.position_reg.q.val();
+        self.z_latch.next = self.latch_reg.q.val();
+        self.index.next = self.index_reg.q.val();
+        self.rev_error.next = self.error_reg.q.val();
+        self.rev_error_count.next = self.error_count.q.val();
+        self.rev_fault.next = self.fault_reg.q.val();
+    }
+}
+
+/// The Verilog of a [`PositionCounter`], top module named `module_name`.
+pub fn position_counter_verilog<const C: usize, const G: usize>(module_name: &str) -> String {
+    crate::verilog::default_block_verilog::<PositionCounter<C, G>>(module_name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_support::verilator_lint;
+
+    /// Reset at edge 0, then (step, forward, z) with R = `cpr`: positions after each edge.
+    fn run(cpr: u64, z_mode: u64, ins: &[(u8, u8, u8)]) -> Vec<(u64, bool)> {
+        let mut uut = PositionCounter::<4, 2>::default();
+        uut.connect_all();
+        let mut out = vec![];
+        for k in 0..=ins.len() {
+            let (s, f, z) = if k == 0 { (0, 0, 0) } else { ins[k - 1] };
+            uut.reset.next = k == 0;
+            uut.step.next = s == 1;
+            uut.forward.next = f == 1;
+            uut.z.next = z == 1;
+            uut.counts_per_rev.next = cpr.into();
+            uut.cfg_z_mode.next = z_mode.into();
+            uut.clock.next = Clock { clk: false };
+            assert!(simulate(&mut uut, 100));
+            uut.clock.next = Clock { clk: true };
+            assert!(simulate(&mut uut, 100));
+            if k > 0 {
+                out.push((uut.position.val().to_u64(), uut.index.val()));
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn wraps_and_resets_on_the_index() {
+        // R = 3: forward 1 2 0 1, backward 0 2. R = 0 is 2^4 = 16: backward from 0 to 15.
+        let f = (1, 1, 0);
+        let b = (1, 0, 0);
+        let pos = |o: Vec<(u64, bool)>| o.iter().map(|p| p.0).collect::<Vec<_>>();
+        assert_eq!(pos(run(3, 0, &[f, f, f, f, b, b])), [1, 2, 0, 1, 0, 2]);
+        assert_eq!(pos(run(0, 0, &[b, b, f])), [15, 14, 15]);
+        // z sampled high at edge 3 (low at 1, 2): the rise is processed at edge 4, with the
+        // step of that edge: position 0 instead of 4.
+        let got = run(10, 1, &[f, f, (1, 1, 1), f, f]);
+        assert_eq!(
+            got,
+            [(1, false), (2, false), (3, false), (0, true), (1, false)]
+        );
+    }
+
+    #[test]
+    fn synthesises() {
+        let mut uut = PositionCounter::<16, 8>::default();
+        uut.connect_all();
+        yosys_validate("encspeed_position_counter", &generate_verilog(&uut)).unwrap();
+    }
+
+    #[test]
+    fn verilator_lint_is_clean() {
+        verilator_lint(
+            "position_counter",
+            &position_counter_verilog::<16, 8>("position_counter"),
+        );
+        verilator_lint(
+            "position_counter",
+            &position_counter_verilog::<1, 1>("position_counter"),
+        );
+    }
+}

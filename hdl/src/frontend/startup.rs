@@ -1,0 +1,160 @@
+//! Start-up hold of the quadrature front end.
+//!
+//! After reset the synchronisers and the glitch filters hold cleared (low) values, not
+//! samples of the encoder: a filter passes a channel that is already high only after
+//! max(`cfg_filter`, 1) edges of real samples, which the decoder would take for a
+//! transition. This block holds the decoder and the position counter in reset (`front_reset`)
+//! while fewer than 2 + max(`cfg_filter`, 1) edges have passed since reset: 2 for the
+//! synchronisers, then the filter's delay. The first sample the decoder takes is then a
+//! filtered sample of the real channels (the golden rule is in `golden::top::core`).
+//!
+//! Registers: a 2-bit count of the synchroniser edges (saturating at 2), a 16-bit count of
+//! the edges after them (saturating at 2^16 − 1, the longest filter) and a `done` flag set
+//! when the hold first ends, so that raising `cfg_filter` later does not bring the hold
+//! back (it would reset the decoder and the position counter).
+
+use golden::params::FILTER_BITS;
+use rust_hdl::prelude::*;
+
+const FB: usize = FILTER_BITS as usize;
+
+/// Start-up hold of the front end.
+#[derive(LogicBlock)]
+pub struct Startup {
+    /// Clock of the core.
+    pub clock: Signal<In, Clock>,
+    /// Synchronous active-high reset.
+    pub reset: Signal<In, Bit>,
+    /// Glitch filter length L, clock cycles (0: off).
+    pub cfg_filter: Signal<In, Bits<FB>>,
+    /// `reset`, or fewer than 2 + max(L, 1) edges since reset (and the hold has not ended
+    /// before): the reset of the decoder and the position counter.
+    pub front_reset: Signal<Out, Bit>,
+    hold: Signal<Local, Bit>,
+    sync_edges: DFF<Bits<2>>,
+    settle_edges: DFF<Bits<FB>>,
+    done: DFF<Bit>,
+    filter_delay: Signal<Local, Bits<FB>>,
+    two: Constant<Bits<2>>,
+    sync_one: Constant<Bits<2>>,
+    zero: Constant<Bits<FB>>,
+    one: Constant<Bits<FB>>,
+    max: Constant<Bits<FB>>,
+    sync_zero: Constant<Bits<2>>,
+}
+
+impl Default for Startup {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            reset: Default::default(),
+            cfg_filter: Default::default(),
+            hold: Default::default(),
+            front_reset: Default::default(),
+            sync_edges: Default::default(),
+            settle_edges: Default::default(),
+            done: Default::default(),
+            filter_delay: Default::default(),
+            two: Constant::new(2.into()),
+            sync_one: Constant::new(1.into()),
+            zero: Constant::new(0.into()),
+            one: Constant::new(1.into()),
+            max: Constant::new(((1u64 << FB) - 1).into()),
+            sync_zero: Constant::new(0.into()),
+        }
+    }
+}
+
+impl Logic for Startup {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, sync_edges, settle_edges, done);
+        // max(L, 1): a filter of 0 or 1 cycles delays a level by one edge.
+        self.filter_delay.next = self.cfg_filter.val();
+        if self.cfg_filter.val() == self.zero.val() {
+            self.filter_delay.next = self.one.val();
+        }
+        if self.sync_edges.q.val() != self.two.val() {
+            self.sync_edges.d.next = self.sync_edges.q.val() + self.sync_one.val();
+        } else if self.settle_edges.q.val() != self.max.val() {
+            self.settle_edges.d.next = self.settle_edges.q.val() + self.one.val();
+        }
+        // The hold ends once for all: raising cfg_filter later does not bring it back.
+        self.done.d.next = self.done.q.val();
+        if (self.sync_edges.q.val() == self.two.val())
+            & (self.settle_edges.q.val() >= self.filter_delay.val())
+        {
+            self.done.d.next = true;
+        }
+        if self.reset.val() {
+            self.done.d.next = false;
+            self.sync_edges.d.next = self.sync_zero.val();
+            self.settle_edges.d.next = self.zero.val();
+        }
+        self.hold.next = !self.done.q.val()
+            & ((self.sync_edges.q.val() != self.two.val())
+                | (self.settle_edges.q.val() < self.filter_delay.val()));
+        // Combined here rather than in the core: logic of the core that read `hold` and the
+        // value it drives `reset` with would form a false loop for Verilator (UNOPTFLAT).
+        self.front_reset.next = self.reset.val() | self.hold.val();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `hold` after each edge k = 1, 2, … following a reset edge, for filter length `l`.
+    fn holds(l: u64, edges: usize) -> Vec<bool> {
+        let mut uut = Startup::default();
+        uut.connect_all();
+        let mut out = vec![];
+        for k in 0..=edges {
+            uut.reset.next = k == 0;
+            uut.cfg_filter.next = l.into();
+            uut.clock.next = Clock { clk: false };
+            assert!(simulate(&mut uut, 10));
+            uut.clock.next = Clock { clk: true };
+            assert!(simulate(&mut uut, 10));
+            if k > 0 {
+                out.push(uut.front_reset.val());
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn holds_for_two_plus_the_filter_delay() {
+        // By hand: after edge k, k edges have passed; hold while k < 2 + max(L, 1).
+        for l in [0u64, 1, 2, 5] {
+            let h = holds(l, 12);
+            let n = (2 + l.max(1)) as usize;
+            for (k, &held) in h.iter().enumerate() {
+                assert_eq!(held, k + 1 < n, "L = {l}, edge {}", k + 1);
+            }
+        }
+    }
+
+    #[test]
+    fn raising_the_filter_later_does_not_hold_again() {
+        let mut uut = Startup::default();
+        uut.connect_all();
+        for k in 0..20u64 {
+            uut.reset.next = k == 0;
+            // Filter 1 until edge 10 (the hold ends after edge 3), then 1000.
+            uut.cfg_filter.next = if k < 10 { 1u64 } else { 1000 }.into();
+            uut.clock.next = Clock { clk: false };
+            assert!(simulate(&mut uut, 10));
+            uut.clock.next = Clock { clk: true };
+            assert!(simulate(&mut uut, 10));
+            assert_eq!(uut.front_reset.val(), k < 3, "after edge {k}");
+        }
+    }
+
+    #[test]
+    fn synthesises() {
+        let mut uut = Startup::default();
+        uut.connect_all();
+        yosys_validate("encspeed_startup", &generate_verilog(&uut)).unwrap();
+    }
+}

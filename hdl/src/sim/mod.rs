@@ -1,0 +1,6 @@
+//! Direct-drive simulations of the tops behind width-independent interfaces.
+
+pub mod core_sim;
+pub mod ecc_sim;
+pub mod ecc_wb_sim;
+pub mod wb_sim;

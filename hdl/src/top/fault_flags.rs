@@ -1,0 +1,195 @@
+//! Sticky fault flags and the glitch counter of the core.
+//!
+//! Per edge: each flag is set by its event pulse (`illegal`; `rejected_a` or `rejected_b`
+//! for over-speed; `rev_fault`), held, and cleared by `clear_faults` unless its event comes
+//! in the same cycle (the event wins); `glitch_count` adds the rejected pulses of the A, B
+//! and Z filters (0 to 3 per edge), saturating at 2^16 − 1. Reset clears everything. The
+//! flags and the count are registers: they show an event one edge after the pulse that
+//! reports it. Bit-true model: the fault rules of [`golden::top::core`].
+
+use golden::params::ERROR_COUNT_BITS;
+use rust_hdl::prelude::*;
+
+const G: usize = ERROR_COUNT_BITS as usize;
+
+/// Sticky fault flags and the saturating glitch counter.
+#[derive(LogicBlock)]
+pub struct FaultFlags {
+    /// Clock of the core.
+    pub clock: Signal<In, Clock>,
+    /// Synchronous active-high reset.
+    pub reset: Signal<In, Bit>,
+    /// Clear the three flags (not the counter).
+    pub clear_faults: Signal<In, Bit>,
+    /// Illegal transition (decoder pulse).
+    pub illegal: Signal<In, Bit>,
+    /// The A filter rejected a pulse.
+    pub rejected_a: Signal<In, Bit>,
+    /// The B filter rejected a pulse.
+    pub rejected_b: Signal<In, Bit>,
+    /// The Z filter rejected a pulse.
+    pub rejected_z: Signal<In, Bit>,
+    /// A revolution with the wrong count (position counter pulse).
+    pub rev_fault: Signal<In, Bit>,
+    /// Sticky illegal transition.
+    pub fault_illegal: Signal<Out, Bit>,
+    /// Sticky over-speed (A or B pulse shorter than the filter).
+    pub fault_overspeed: Signal<Out, Bit>,
+    /// Sticky revolution count error.
+    pub fault_revolution: Signal<Out, Bit>,
+    /// Rejected pulses of A, B and Z (saturating).
+    pub glitch_count: Signal<Out, Bits<G>>,
+    illegal_reg: DFF<Bit>,
+    overspeed_reg: DFF<Bit>,
+    revolution_reg: DFF<Bit>,
+    count: DFF<Bits<G>>,
+    count_wide: Signal<Local, Bits<G>>,
+    sum: Signal<Local, Bits<G>>,
+    ab: Signal<Local, Bits<G>>,
+    zero: Constant<Bits<G>>,
+    one: Constant<Bits<G>>,
+    max: Constant<Bits<G>>,
+}
+
+impl Default for FaultFlags {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            reset: Default::default(),
+            clear_faults: Default::default(),
+            illegal: Default::default(),
+            rejected_a: Default::default(),
+            rejected_b: Default::default(),
+            rejected_z: Default::default(),
+            rev_fault: Default::default(),
+            fault_illegal: Default::default(),
+            fault_overspeed: Default::default(),
+            fault_revolution: Default::default(),
+            glitch_count: Default::default(),
+            illegal_reg: Default::default(),
+            overspeed_reg: Default::default(),
+            revolution_reg: Default::default(),
+            count: Default::default(),
+            count_wide: Default::default(),
+            sum: Default::default(),
+            ab: Default::default(),
+            zero: Constant::new(0.into()),
+            one: Constant::new(1.into()),
+            max: Constant::new(((1u64 << G) - 1).into()),
+        }
+    }
+}
+
+impl Logic for FaultFlags {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clock,
+            illegal_reg,
+            overspeed_reg,
+            revolution_reg,
+            count
+        );
+        self.illegal_reg.d.next =
+            (self.illegal_reg.q.val() & !self.clear_faults.val()) | self.illegal.val();
+        self.overspeed_reg.d.next = (self.overspeed_reg.q.val() & !self.clear_faults.val())
+            | self.rejected_a.val()
+            | self.rejected_b.val();
+        self.revolution_reg.d.next =
+            (self.revolution_reg.q.val() & !self.clear_faults.val()) | self.rev_fault.val();
+        // Saturating add of 0..3, one increment at a time so that no sum can wrap.
+        self.count_wide.next = self.count.q.val();
+        if self.rejected_a.val() & (self.count_wide.val() != self.max.val()) {
+            self.count_wide.next = self.count.q.val() + self.one.val();
+        }
+        self.ab.next = self.count_wide.val();
+        if self.rejected_b.val() & (self.count_wide.val() != self.max.val()) {
+            self.ab.next = self.count_wide.val() + self.one.val();
+        }
+        self.sum.next = self.ab.val();
+        if self.rejected_z.val() & (self.ab.val() != self.max.val()) {
+            self.sum.next = self.ab.val() + self.one.val();
+        }
+        self.count.d.next = self.sum.val();
+        if self.reset.val() {
+            self.illegal_reg.d.next = false;
+            self.overspeed_reg.d.next = false;
+            self.revolution_reg.d.next = false;
+            self.count.d.next = self.zero.val();
+        }
+        self.fault_illegal.next = self.illegal_reg.q.val();
+        self.fault_overspeed.next = self.overspeed_reg.q.val();
+        self.fault_revolution.next = self.revolution_reg.q.val();
+        self.glitch_count.next = self.count.q.val();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_support::verilator_lint;
+
+    #[test]
+    fn flags_are_sticky_until_cleared_and_an_event_wins() {
+        let mut uut = FaultFlags::default();
+        uut.connect_all();
+        // (reset, clear, illegal, rej_a, rej_b, rej_z, rev) → (illegal, overspeed, rev, count)
+        type Row = ([bool; 7], (bool, bool, bool, u64));
+        let rows: [Row; 6] = [
+            (
+                [true, false, false, false, false, false, false],
+                (false, false, false, 0),
+            ),
+            (
+                [false, false, true, false, true, true, false],
+                (true, true, false, 2),
+            ),
+            (
+                [false, false, false, false, false, false, true],
+                (true, true, true, 2),
+            ),
+            (
+                [false, true, false, false, false, false, false],
+                (false, false, false, 2),
+            ),
+            (
+                [false, true, true, true, true, true, false],
+                (true, true, false, 5),
+            ),
+            (
+                [true, false, true, true, true, true, true],
+                (false, false, false, 0),
+            ),
+        ];
+        for (k, (i, want)) in rows.iter().enumerate() {
+            uut.reset.next = i[0];
+            uut.clear_faults.next = i[1];
+            uut.illegal.next = i[2];
+            uut.rejected_a.next = i[3];
+            uut.rejected_b.next = i[4];
+            uut.rejected_z.next = i[5];
+            uut.rev_fault.next = i[6];
+            uut.clock.next = Clock { clk: false };
+            assert!(simulate(&mut uut, 10));
+            uut.clock.next = Clock { clk: true };
+            assert!(simulate(&mut uut, 10));
+            let got = (
+                uut.fault_illegal.val(),
+                uut.fault_overspeed.val(),
+                uut.fault_revolution.val(),
+                uut.glitch_count.val().to_u64(),
+            );
+            assert_eq!(got, *want, "row {k}");
+        }
+    }
+
+    #[test]
+    fn synthesises_and_lints() {
+        let mut uut = FaultFlags::default();
+        uut.connect_all();
+        let v = generate_verilog(&uut);
+        yosys_validate("encspeed_fault_flags", &v).unwrap();
+        verilator_lint("top", &v);
+    }
+}

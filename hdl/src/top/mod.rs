@@ -1,0 +1,7 @@
+//! The shipped tops and the core's fault flags.
+
+pub mod core;
+pub mod ecc_top;
+pub mod ecc_wb_top;
+pub mod fault_flags;
+pub mod wb_top;
