@@ -27,12 +27,9 @@ fn encspeed(args: &[&str]) -> Output {
 
 /// A fresh work directory under target/ (never the source tree).
 fn scratch(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("target/identify-cli")
-        .join(name);
+    let d = tools::target_dir().join("identify-cli").join(name);
     let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("create the work directory");
-    d
+    tools::work_dir("identify-cli", name).expect("create the work directory")
 }
 
 fn text(o: &Output) -> String {
@@ -222,28 +219,10 @@ fn icarus_vcd(tag: &str, rpm: f64, theta0_deg: f64) -> PathBuf {
         format!("-DRPM={rpm:.17e}"),
         "-DREVS=2.1".to_string(),
     ];
-    let compile = Command::new("iverilog")
-        .current_dir(&dir)
-        .args(["-Wall", "-g2005", "-o", "bench.vvp"])
-        .args(&defines)
-        .arg(&bench)
-        .output()
-        .expect("run iverilog (install it: see .ci/run)");
-    assert!(
-        compile.status.success() && compile.stderr.is_empty(),
-        "iverilog: {}",
-        text(&compile)
-    );
-    let run = Command::new("vvp")
-        .current_dir(&dir)
-        .args(["-n", "bench.vvp"])
-        .output()
-        .expect("run vvp");
-    assert!(
-        run.status.success() && String::from_utf8_lossy(&run.stdout).contains("quarter-line"),
-        "vvp: {}",
-        text(&run)
-    );
+    let defines: Vec<&str> = defines.iter().map(String::as_str).collect();
+    tools::iverilog(&dir, &defines, &[bench.to_str().unwrap()], "bench.vvp").unwrap();
+    let out = tools::vvp(&dir, "bench.vvp", &[]).unwrap();
+    assert!(out.contains("quarter-line"), "vvp: {out}");
     dir.join("eccentric_disc.vcd")
 }
 

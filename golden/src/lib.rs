@@ -21,6 +21,7 @@ pub mod bus;
 pub mod ecc;
 pub mod eccentric;
 pub mod estimator;
+pub mod freqresp;
 pub mod frontend;
 pub mod ideal;
 pub mod params;

@@ -83,6 +83,11 @@ pub enum ParamError {
     TimeoutShorterThanDt { timeout_s: f64, dt_s: f64 },
     /// The timeout, in dt intervals, does not fit the Cdt counter.
     TimeoutTooWide { timeout_dt: f64, counter_bits: u32 },
+    /// `lines` cannot have the eccentricity corrector ([`Params::check_ecc`]).
+    EccLines(u32),
+    /// A sample time that is not a whole number of clock cycles ≥ [`MIN_DT_CYCLES`] below
+    /// 2^31 ([`dt_cycles_for`]).
+    DtNotWhole { ts_s: f64, clock_hz: f64 },
 }
 
 impl fmt::Display for ParamError {
@@ -134,6 +139,17 @@ impl fmt::Display for ParamError {
                 max_value(*counter_bits),
                 bits_for(*timeout_dt as u64)
             ),
+            ParamError::EccLines(v) => write!(
+                f,
+                "lines = {v}: the eccentricity corrector needs a multiple of 4 lines in \
+                 {ECC_MIN_LINES}..={ECC_MAX_LINES} (a sine table of one entry per line, \
+                 16-bit address)"
+            ),
+            ParamError::DtNotWhole { ts_s, clock_hz } => write!(
+                f,
+                "T_s = {ts_s} s at clock_hz = {clock_hz}: dt = T_s * clock_hz must be a whole \
+                 number of cycles, {MIN_DT_CYCLES}..2^31"
+            ),
         }
     }
 }
@@ -145,10 +161,29 @@ pub fn max_value(bits: u32) -> u64 {
     (1u64 << bits) - 1
 }
 
+/// dt in clock cycles for a sample time `ts_s` at `clock_hz`: refused unless it is a whole
+/// number of cycles (within 1e-9 relative) from [`MIN_DT_CYCLES`] up to 2^31.
+pub fn dt_cycles_for(clock_hz: f64, ts_s: f64) -> Result<u64, ParamError> {
+    let cycles = ts_s * clock_hz;
+    let dt = cycles.round();
+    if dt >= MIN_DT_CYCLES as f64 && (cycles - dt).abs() <= 1e-9 * dt && dt < 2f64.powi(31) {
+        Ok(dt as u64)
+    } else {
+        Err(ParamError::DtNotWhole { ts_s, clock_hz })
+    }
+}
+
 /// Fewest bits that hold `v`.
 pub fn bits_for(v: u64) -> u32 {
     (u64::BITS - v.leading_zeros()).max(1)
 }
+
+/// Fewest lines the eccentricity tops take (one quarter-wave of the sine table per line
+/// quadrant).
+pub const ECC_MIN_LINES: u32 = 4;
+/// Most lines the eccentricity tops take: the sine table has one entry per line and a
+/// 16-bit address.
+pub const ECC_MAX_LINES: u32 = 1 << 16;
 
 /// Validated parameters. Construct with [`Params::new`]; fields are private so that no
 /// unvalidated value reaches the model or the hardware.
@@ -209,6 +244,18 @@ impl Params {
             spec,
             timeout_dt: timeout_dt as u64,
         })
+    }
+
+    /// Whether the eccentricity tops (`encspeed_ecc`, `encspeed_ecc_wb`) can be built for
+    /// these parameters: `lines` a multiple of 4 in [`ECC_MIN_LINES`]..=[`ECC_MAX_LINES`].
+    /// The core and its Wishbone top take any `lines`.
+    pub fn check_ecc(&self) -> Result<(), ParamError> {
+        let k = self.spec.lines;
+        if (ECC_MIN_LINES..=ECC_MAX_LINES).contains(&k) && k.is_multiple_of(4) {
+            Ok(())
+        } else {
+            Err(ParamError::EccLines(k))
+        }
     }
 
     /// The specification these parameters were validated from.

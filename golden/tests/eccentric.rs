@@ -1,7 +1,7 @@
 //! Eccentricity tests (issue 4, golden part). Truth comes from outside the code under
 //! test: closed forms written here (series, quadrature, the sine rule), the numbers of
-//! ../shared/DESIGN-NOTES.md §4 (checked independently), and the paper's own figures.
-//! Run with `-- --nocapture` to see every reported figure.
+//! docs/design-decisions.md#eccentricity (checked independently), and the paper's own
+//! figures. Run with `-- --nocapture` to see every reported figure.
 
 use golden::eccentric::correct::{
     line_period_speeds, mt_speeds, ripple, Correction, Ripple, Terms,
@@ -96,7 +96,8 @@ fn counts_per_revolution_rigid_exact_zhao_loses_68_ppm() {
             let n_zhao = zhao.position(start + 1.0) - zhao.position(start);
             assert!((n_rigid - f64::from(K)).abs() < 1e-9, "{n_rigid}");
             let lost_ppm = (1.0 - n_zhao / f64::from(K)) * 1e6;
-            // DESIGN-NOTES: 2π(1 − e²/2) per revolution → e²/2 = 68.06 ppm at e = 1.1667 %.
+            // Zhao's plant gives 2π(1 − e²/2) of disc angle per revolution → e²/2 =
+            // 68.06 ppm at e = 1.1667 % (docs/design-decisions.md#ecc-plants).
             assert!((lost_ppm - 0.5 * e * e * 1e6).abs() < 1e-6, "{lost_ppm}");
             assert!((lost_ppm - 68.06).abs() < 0.01, "{lost_ppm}");
         }
@@ -373,7 +374,8 @@ fn harmonic_model_constants() {
 
 #[test]
 fn identification_rigid_disc_clock_quantised() {
-    // DESIGN-NOTES: printed eq. (20) 34–71 % too large; the fit within 0.002 % / 0.01°.
+    // Printed eq. (20) ≈ e/|cos θ0|, tens of % too large; the fit within 0.002 % / 0.01°
+    // (docs/design-decisions.md#ecc-identification).
     let e = e_paper();
     let theta0 = 50f64.to_radians();
     println!(
@@ -720,7 +722,8 @@ fn correction_from_identified_coefficients() {
 
 #[test]
 fn correction_zhao_plant_needs_second_harmonic_and_scale() {
-    // DESIGN-NOTES: first harmonic + scale leaves ≈ 75 ppm, first + second + scale ≈ 2.3.
+    // Expected (docs/design-decisions.md#ecc-correction): first harmonic + scale leaves the
+    // second harmonic e²/2 ≈ 68 ppm plus e³ terms (≈ 75 ppm), first + second + scale ≈ 2.3.
     // Zhao's Γ is not periodic in the apparent phase (K lines = 1/(1 − e²/2) shaft
     // revolutions), so the e³ remainder holds a secular term −(e³/2)·ψ'·cos ψ', anchored at
     // the law's origin ψ' = 0: the residual over one revolution depends on where that

@@ -1,4 +1,4 @@
-//! The VCO experiment in simulation (`golden::smallsignal::freqresp`): the analysis against hand-known
+//! The VCO experiment in simulation (`golden::freqresp`): the analysis against hand-known
 //! answers, the paper's validation points (Section III, Figs. 8-11) against its models,
 //! the derived models of M/T and n3, and where the small-signal picture breaks; and the
 //! same validation points measured on the core's hardware outputs (`speed_pc`,
@@ -8,7 +8,7 @@
 //! checked against hand values in `smallsignal.rs`) and from hand calculation; the long
 //! sweeps are in docs/frequency-response.md (`encspeed bode`).
 
-use golden::smallsignal::freqresp::{
+use golden::freqresp::{
     log_spaced, mt_model, n3_model, pc_model, to_csv, BodeSpec, Estimator, Experiment, FreqModel,
     FreqRespError, Source, CSV_HEADER,
 };

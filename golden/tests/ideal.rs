@@ -1,6 +1,7 @@
 //! Ideal-estimator tests. Known answers are worked out by hand in the comments from
-//! Rairán's Table 1 (order of the four steps as in DESIGN-NOTES §3), and bounds come from
-//! the paper's equations (1), (6), (11) and (13), restated here rather than imported.
+//! Rairán's Table 1 (order of the four steps as in docs/design-decisions.md#table1-order),
+//! and bounds come from the paper's equations (1), (6), (11) and (13), restated here rather
+//! than imported.
 
 use golden::ideal::plant::{edges, pulse_times, Channel, Disc, Profile};
 use golden::ideal::{
@@ -63,7 +64,8 @@ fn estimate_functions_by_hand() {
     assert!((n3(1, 1) - 2.0 / 3.0).abs() < 1e-15);
     // Nothing counted yet.
     assert_eq!(n3(0, 1), 0.0);
-    // Closed forms of DESIGN-NOTES §3: 2·Nep1/(2·Ndt1+1) (low), 2·N(N−1)/(Ndt1(2N−1)).
+    // Closed forms of the harmonic mean (docs/design-decisions.md#table1-estimates):
+    // 2·Nep1/(2·Ndt1+1) (low), 2·N(N−1)/(Ndt1(2N−1)) (high).
     for ndt in 1..50u64 {
         assert!((n3(1, ndt) - 2.0 / (2 * ndt + 1) as f64).abs() < 1e-15);
     }

@@ -9,8 +9,6 @@
 //! length and the knobs), so that one case is a few hundred to a few thousand cycles
 //! without proptest holding a vector per cycle.
 
-mod common;
-
 use golden::frontend::{
     CounterInputs, CounterOutputs, DecoderInputs, DecoderOutputs, GlitchFilter as GoldFilter,
     GlitchFilterInputs, GlitchFilterOutputs, PositionCounter as GoldCounter,
@@ -413,8 +411,7 @@ fn icarus(
     outputs: &[(&str, usize)],
     vectors: &[Vec<u64>],
 ) -> Vec<Vec<u64>> {
-    let dir = common::target_dir().join("frontend_cosim").join(top);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tools::work_dir("frontend_cosim", top).unwrap();
     let decl =
         |kind: &str, (name, w): &(&str, usize)| format!("    {kind} [{}:0] {name};\n", w - 1);
     let mut tb = String::from("module tb;\n    reg clock;\n");
@@ -455,7 +452,9 @@ fn icarus(
         })
         .collect();
     std::fs::write(dir.join("vectors.txt"), rows).unwrap();
-    let text = common::icarus_run(&dir, &[], &["tb.v".into(), format!("{top}.v")]);
+    let v = format!("{top}.v");
+    tools::iverilog(&dir, &[], &["tb.v", &v], "tb.vvp").unwrap();
+    let text = tools::vvp(&dir, "tb.vvp", &[]).unwrap();
     let rows: Vec<Vec<u64>> = text
         .lines()
         .filter(|l| !l.is_empty() && !l.contains("$finish"))

@@ -140,7 +140,10 @@ impl Allowed {
 impl Setup {
     /// The standard setup (module docs) in decoding mode `cfg_mode`.
     pub fn standard(cfg_mode: u8) -> Setup {
-        assert!(cfg_mode <= 2, "cfg_mode {cfg_mode}: 0, 1 or 2");
+        assert!(
+            cfg_mode < golden::frontend::MODE_INVALID,
+            "cfg_mode {cfg_mode}: x1, x2 or x4 (0, 1 or 2)"
+        );
         Setup {
             clock_hz: CLOCK_HZ,
             lines: LINES,

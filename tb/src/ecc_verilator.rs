@@ -144,7 +144,7 @@ impl EccVerilated {
         if !verilog.contains(&format!("module {MODULE}(")) {
             return Err(format!("the Verilog has no module {MODULE}"));
         }
-        let exe = stream_harness::build_cached(
+        let exe = tools::verilator_build(
             "ecc-",
             MODULE,
             &[

@@ -1,8 +1,8 @@
 //! The frequency response of the core's estimators measured on the emitted Verilog, and
 //! Bode figures.
 //!
-//! [`measure_on_verilog`] runs the plan of a [`golden::smallsignal::freqresp::Experiment`] on the core
-//! (n3, or PC, ET, M/T with [`golden::smallsignal::freqresp::Source::Hardware`]: the outputs
+//! [`measure_on_verilog`] runs the plan of a [`golden::freqresp::Experiment`] on the core
+//! (n3, or PC, ET, M/T with [`golden::freqresp::Source::Hardware`]: the outputs
 //! `speed_pc`, `speed_et`, `speed_mt` read at `baseline_strobe`) through the Verilog that
 //! ships (`hdl::emit_core`, compiled by Verilator), checks that every cycle of every
 //! output equals the bit-true model, and analyses the outputs with the same code as the
@@ -12,7 +12,7 @@
 
 use crate::cosim::{first_mismatch, run_golden};
 use crate::verilator::Verilated;
-use golden::smallsignal::freqresp::{Experiment, FreqModel, Measurement};
+use golden::freqresp::{Experiment, FreqModel, Measurement};
 use plotters::prelude::*;
 use std::path::Path;
 

@@ -2,7 +2,6 @@
 //! by the self-checking bench `tb/icarus/replay_tb.v` (a second, independent simulator).
 
 use golden::top::core::{CoreInputs, CoreOutputs};
-use std::process::Command;
 
 const BENCH: &str = include_str!("../icarus/replay_tb.v");
 
@@ -26,8 +25,7 @@ pub fn replay(
     expected: &[CoreOutputs],
 ) -> Result<Replay, String> {
     assert_eq!(inputs.len(), expected.len());
-    let dir = crate::target_dir().join("icarus").join(tag);
-    std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
+    let dir = tools::work_dir("icarus", tag)?;
     let w =
         |name: &str, text: &str| std::fs::write(dir.join(name), text).map_err(|e| e.to_string());
     w("encspeed_core.v", verilog)?;
@@ -78,29 +76,13 @@ pub fn replay(
         })
         .collect();
     w("vectors.txt", &vectors)?;
-    let compile = Command::new("iverilog")
-        .current_dir(&dir)
-        .args([
-            "-Wall",
-            "-g2005",
-            &format!("-DW={counter_bits}"),
-            &format!("-DS={speed_bits}"),
-            "-o",
-            "replay.vvp",
-        ])
-        .args(["replay_tb.v", "encspeed_core.v"])
-        .output()
-        .map_err(|e| format!("cannot run iverilog: {e} (install it: see .ci/run)"))?;
-    let warnings = String::from_utf8_lossy(&compile.stderr).to_string();
-    if !compile.status.success() || !warnings.trim().is_empty() {
-        return Err(format!("iverilog -Wall: {warnings}"));
-    }
-    let run = Command::new("vvp")
-        .current_dir(&dir)
-        .args(["-n", "replay.vvp"])
-        .output()
-        .map_err(|e| format!("cannot run vvp: {e}"))?;
-    let text = String::from_utf8_lossy(&run.stdout).to_string();
+    tools::iverilog(
+        &dir,
+        &[&format!("-DW={counter_bits}"), &format!("-DS={speed_bits}")],
+        &["replay_tb.v", "encspeed_core.v"],
+        "replay.vvp",
+    )?;
+    let text = tools::vvp(&dir, "replay.vvp", &[])?;
     let last = text
         .lines()
         .rev()

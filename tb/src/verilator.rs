@@ -99,35 +99,24 @@ pub fn outputs_of_fields(f: &[u64], speed_bits: u32) -> CoreOutputs {
     }
 }
 
-/// Write the emitted Verilog and the waivers into `dir` for a tool to read.
-pub fn stage(dir: &Path, verilog: &str) -> std::io::Result<(PathBuf, PathBuf)> {
-    let paths = stream_harness::stage(
-        dir,
-        &[("encspeed_core.v", verilog), ("waivers.vlt", WAIVERS)],
-    )?;
-    Ok((paths[0].clone(), paths[1].clone()))
-}
-
 /// `verilator --lint-only -Wall` with the documented waivers; Ok on a clean lint.
 pub fn lint(verilog: &str) -> Result<String, String> {
-    let dir = crate::target_dir()
-        .join("verilator")
-        .join(format!("lint-{:016x}", stream_harness::fnv1a(&[verilog])));
-    let (v, w) = stage(&dir, verilog).map_err(|e| e.to_string())?;
-    crate::run_tool(
-        Command::new("verilator")
-            .args(["--lint-only", "-Wall", "--top-module", "encspeed_core"])
-            .arg(&w)
-            .arg(&v),
-        "verilator --lint-only",
-    )
+    let dir = tools::work_dir(
+        "verilator",
+        &format!("lint-{:016x}", tools::content_hash(&[verilog])),
+    )?;
+    tools::stage(
+        &dir,
+        &[("encspeed_core.v", verilog), ("waivers.vlt", WAIVERS)],
+    )?;
+    tools::verilator_lint(&dir, "encspeed_core", &["waivers.vlt", "encspeed_core.v"])
 }
 
 impl Verilated {
     /// Compile `verilog` (top module `encspeed_core`) with the harness, or reuse the build.
     pub fn build(verilog: &str) -> Result<Verilated, String> {
         let speed_bits = speed_bits_of(verilog)?;
-        let exe = stream_harness::build_cached(
+        let exe = tools::verilator_build(
             "",
             "encspeed_core",
             &[
@@ -163,7 +152,7 @@ impl Verilated {
     /// Benchmark: cycles per second of the compiled Verilog on a square wave of `period`
     /// cycles with dt = `dt` (see the harness's `--bench`).
     pub fn bench(&self, cycles: u64, period: u64, dt: u64) -> Result<f64, String> {
-        let out = crate::run_tool(
+        let out = tools::run(
             Command::new(&self.exe).args([
                 "--bench",
                 &cycles.to_string(),

@@ -1,14 +1,12 @@
 //! The emitted `encspeed_wb.v` (core + Wishbone register file), compiled by Verilator with
 //! the harness `tb/verilator/wb_harness.cpp`: the same pattern as [`crate::verilator`]
-//! (build cached under `target/verilator/wb-<hash>/` by content, built in a private
-//! directory per call and renamed into place, inputs and outputs streamed one line per
-//! cycle). A missing `verilator` is an error, never a skip: `.ci/run` installs it.
+//! (built by [`tools::verilator_build`], cached by content under
+//! `target/verilator/<module>-<hash>/`, inputs and outputs streamed one line per cycle). A missing `verilator` is an error, never a skip: `.ci/run` installs it.
 
 use crate::stream_harness;
 use golden::top::ecc_wb_top::ECC_WB_TOP_MODULE;
 use golden::top::wb_top::{WbTopInputs, WbTopOutputs, TOP_MODULE};
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 const HARNESS: &str = include_str!("../verilator/wb_harness.cpp");
 /// The top's own lint waivers (each one explained in the file).
@@ -36,20 +34,16 @@ pub fn lint(verilog: &str) -> Result<String, String> {
 /// `verilator --lint-only -Wall` on `verilog`, top module `module`, with `waivers`; Ok on a
 /// clean lint (a warning fails the run).
 pub fn lint_top(verilog: &str, module: &str, waivers: &str) -> Result<String, String> {
-    let dir = crate::target_dir().join("verilator").join(format!(
-        "{module}-lint-{:016x}",
-        stream_harness::fnv1a(&[verilog, waivers])
-    ));
+    let dir = tools::work_dir(
+        "verilator",
+        &format!(
+            "{module}-lint-{:016x}",
+            tools::content_hash(&[verilog, waivers])
+        ),
+    )?;
     let v = format!("{module}.v");
-    let paths = stream_harness::stage(&dir, &[(&v, verilog), ("waivers.vlt", waivers)])
-        .map_err(|e| e.to_string())?;
-    crate::run_tool(
-        Command::new("verilator")
-            .args(["--lint-only", "-Wall", "--top-module", module])
-            .arg(&paths[1])
-            .arg(&paths[0]),
-        "verilator --lint-only",
-    )
+    tools::stage(&dir, &[(&v, verilog), ("waivers.vlt", waivers)])?;
+    tools::verilator_lint(&dir, module, &["waivers.vlt", &v])
 }
 
 /// The waivers of `encspeed_ecc_wb.v`: `encspeed_ecc`'s
@@ -81,7 +75,7 @@ impl VerilatedWb {
         }
         let v = format!("{module}.v");
         let harness = HARNESS.replace("Vencspeed_wb", &format!("V{module}"));
-        let exe = stream_harness::build_cached(
+        let exe = tools::verilator_build(
             &format!("{module}-"),
             module,
             &[

@@ -8,7 +8,6 @@
 use golden::estimator::bounds::n3_error_budget;
 use golden::estimator::speed_calc::speed_lsb_error;
 use std::path::PathBuf;
-use std::process::Command;
 
 const DT: u64 = 1000;
 
@@ -25,41 +24,28 @@ fn run(period: u64, cycles: u64) -> Vec<(f64, bool)> {
     let frac = manifest["speed_frac_bits"].as_integer().unwrap();
     let bits = manifest["speed_bits"].as_integer().unwrap();
     let n = manifest["spec"]["counter_bits"].as_integer().unwrap();
-    let dir = tb::target_dir()
-        .join("icarus")
-        .join(format!("constant-speed-{period}"));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tools::work_dir("icarus", &format!("constant-speed-{period}")).unwrap();
     std::fs::copy(generated("encspeed_core.v"), dir.join("encspeed_core.v")).unwrap();
     std::fs::write(
         dir.join("constant_speed_tb.v"),
         include_str!("../icarus/constant_speed_tb.v"),
     )
     .unwrap();
-    let out = Command::new("iverilog")
-        .current_dir(&dir)
-        .args(["-Wall", "-g2005", "-o", "bench.vvp"])
-        .args([
-            format!("-DW={n}"),
-            format!("-DS={bits}"),
-            format!("-DFRAC={frac}"),
-            format!("-DPERIOD={period}"),
-            format!("-DDT={DT}"),
-            format!("-DCYCLES={cycles}"),
-        ])
-        .args(["constant_speed_tb.v", "encspeed_core.v"])
-        .output()
-        .expect("iverilog is installed by .ci/run");
-    assert!(
-        out.status.success() && out.stderr.is_empty(),
-        "iverilog: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let run = Command::new("vvp")
-        .current_dir(&dir)
-        .args(["-n", "bench.vvp"])
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&run.stdout);
+    tools::iverilog(
+        &dir,
+        &[
+            &format!("-DW={n}"),
+            &format!("-DS={bits}"),
+            &format!("-DFRAC={frac}"),
+            &format!("-DPERIOD={period}"),
+            &format!("-DDT={DT}"),
+            &format!("-DCYCLES={cycles}"),
+        ],
+        &["constant_speed_tb.v", "encspeed_core.v"],
+        "bench.vvp",
+    )
+    .unwrap();
+    let text = tools::vvp(&dir, "bench.vvp", &[]).unwrap();
     assert!(text.contains("done"), "bench did not finish:\n{text}");
     text.lines()
         .filter_map(|l| {

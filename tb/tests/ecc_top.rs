@@ -168,7 +168,7 @@ fn shipped(p: &Params) -> EccVerilated {
 fn corrected_ripple_on_verilog() {
     let p = Params::new(Spec::default()).unwrap();
     let sim = shipped(&p);
-    let dir = tb::target_dir().join("ecc-ripple");
+    let dir = tools::target_dir().join("ecc-ripple");
     std::fs::create_dir_all(&dir).unwrap();
     for (rpm, revs) in [(30.0, 1.0), (600.0, 3.0), (6000.0, 20.0)] {
         let e = 0.35 / 30.0;

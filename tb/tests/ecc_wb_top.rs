@@ -435,8 +435,7 @@ fn shipped_verilog_lints_clean_with_the_documented_waivers() {
 #[test]
 fn the_c_headers_compile_together_and_agree_with_the_map() {
     let p = Params::new(Spec::default()).unwrap();
-    let dir = tb::target_dir().join("ecc_wb_top").join("c_header");
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tools::work_dir("ecc_wb_top", "c_header").unwrap();
     let files = hdl::emit::wb::emit_wb(&p)
         .into_iter()
         .chain(hdl::emit::wb::emit_ecc_wb(&p).unwrap());
@@ -454,22 +453,14 @@ fn the_c_headers_compile_together_and_agree_with_the_map() {
     }
     c += "\treturn 0;\n}\n";
     std::fs::write(dir.join("main.c"), c).unwrap();
-    let out = std::process::Command::new("gcc")
-        .current_dir(&dir)
-        .args([
+    tools::run(
+        std::process::Command::new("gcc").current_dir(&dir).args([
             "-std=c99", "-Wall", "-Wextra", "-Werror", "-o", "main", "main.c",
-        ])
-        .output()
-        .expect("gcc");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let run = std::process::Command::new(dir.join("main"))
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&run.stdout).to_string();
+        ]),
+        "gcc",
+    )
+    .unwrap();
+    let text = tools::run(&mut std::process::Command::new(dir.join("main")), "main").unwrap();
     let mut want = format!("BASE {}\nLOAD 2\n", m::ECC_BASE);
     for (name, off) in m::LAYOUT {
         want += &format!("{name} {off}\n");

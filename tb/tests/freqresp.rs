@@ -8,7 +8,7 @@
 //! 10 r/min. PC, ET, M/T: one configuration too (125 lines x4, 1 MHz, dt = T_s = 1 ms,
 //! 3600 r/min: 30 transitions per T_s, the paper's Figs. 8 and 10).
 
-use golden::smallsignal::freqresp::{BodeSpec, Estimator, Experiment};
+use golden::freqresp::{BodeSpec, Estimator, Experiment};
 use std::f64::consts::PI;
 use tb::freqresp::{draw_svg, measure_on_verilog, verilated_for, BodeFigure};
 
@@ -123,7 +123,7 @@ fn bode_figures_are_deterministic_svg() {
         fmin_hz: 50.0,
         fmax_hz: 4000.0,
     };
-    let dir = tb::target_dir().join("freqresp-test");
+    let dir = tools::target_dir().join("freqresp-test");
     let (a, b) = (dir.join("a.svg"), dir.join("b.svg"));
     draw_svg(&a, &fig).unwrap();
     draw_svg(&b, &fig).unwrap();

@@ -7,7 +7,6 @@
 use golden::params::{Params, Spec};
 use golden::top::core::CoreInputs;
 use std::path::PathBuf;
-use std::process::Command;
 use tb::cosim::{assert_same, run_golden};
 use tb::verilator::Verilated;
 
@@ -25,36 +24,33 @@ fn default_params() -> Params {
     Params::new(Spec::default()).unwrap()
 }
 
+/// Every file of every shipped top ([`hdl::Top::ALL`]) is in `generated/` byte for byte,
+/// and `generated/` holds nothing else (no file left behind by a renamed top).
 #[test]
 fn generated_files_are_up_to_date() {
-    let e = hdl::emit_core(&default_params());
+    let p = default_params();
     let stale = "is stale: run `cargo run --release -- generate` and commit generated/";
-    assert!(
-        e.verilog == shipped_verilog(),
-        "generated/encspeed_core.v {stale}"
-    );
-    let manifest = std::fs::read_to_string(generated("encspeed_core.toml")).unwrap();
-    assert!(
-        e.manifest == manifest,
-        "generated/encspeed_core.toml {stale}"
+    let mut expected = std::collections::BTreeSet::new();
+    for top in hdl::Top::ALL {
+        for (name, text) in top.files(&p).unwrap() {
+            let shipped = std::fs::read_to_string(generated(&name)).unwrap_or_default();
+            assert!(text == shipped, "generated/{name} {stale}");
+            expected.insert(name);
+        }
+    }
+    let present: std::collections::BTreeSet<String> = std::fs::read_dir(generated(""))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        present, expected,
+        "generated/ holds files of no shipped top"
     );
     // Emission is deterministic.
-    assert_eq!(e.verilog, hdl::emit_core(&default_params()).verilog);
-    // The eccentricity-corrected top.
-    let ecc = hdl::emit_ecc(&default_params()).unwrap();
-    assert!(
-        ecc == std::fs::read_to_string(generated("encspeed_ecc.v")).unwrap_or_default(),
-        "generated/encspeed_ecc.v {stale}"
+    assert_eq!(
+        hdl::Top::Core.files(&p).unwrap(),
+        hdl::Top::Core.files(&p).unwrap()
     );
-    // The Wishbone tops and the C headers.
-    let ecc_wb = hdl::emit::wb::emit_ecc_wb(&default_params()).unwrap();
-    for (name, text) in hdl::emit::wb::emit_wb(&default_params())
-        .into_iter()
-        .chain(ecc_wb)
-    {
-        let shipped = std::fs::read_to_string(generated(name)).unwrap_or_default();
-        assert!(text == shipped, "generated/{name} {stale}");
-    }
 }
 
 #[test]
@@ -175,32 +171,10 @@ fn yosys_synthesises_the_ecc_wishbone_top() {
 
 /// yosys `synth_ice40` of `top` in `verilog`, `check -assert`, no latch inferred; the log.
 fn yosys_synth(top: &str, verilog: &str) -> String {
-    let dir = tb::target_dir().join("yosys");
-    std::fs::create_dir_all(&dir).unwrap();
-    let v = dir.join(format!("{top}.v"));
-    std::fs::write(&v, verilog).unwrap();
-    let out = Command::new("yosys")
-        .arg("-p")
-        .arg(format!(
-            "read_verilog {}; synth_ice40 -top {top}; check -assert; stat",
-            v.display()
-        ))
-        .output()
-        .expect("yosys is installed by .ci/run");
-    let log = String::from_utf8_lossy(&out.stdout).to_string();
-    assert!(
-        out.status.success(),
-        "yosys failed:\n{log}\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    // yosys says "No latch inferred for signal …" for each combinational signal it checked,
-    // and "Latch inferred for signal …" for a latch.
-    let latches: Vec<&str> = log
-        .lines()
-        .filter(|l| l.trim_start().starts_with("Latch inferred"))
-        .collect();
-    assert!(latches.is_empty(), "{top}: latches inferred: {latches:#?}");
-    log
+    let dir = tools::work_dir("yosys", "shipped").unwrap();
+    let v = format!("{top}.v");
+    tools::stage(&dir, &[(&v, verilog)]).unwrap();
+    tools::yosys_synth_ice40(&dir, top, &v).unwrap()
 }
 
 /// Named scenarios with the motion scaled to a dt of 1000 cycles (driven on cfg_dt), so

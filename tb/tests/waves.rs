@@ -27,7 +27,7 @@ fn vcd_holds_ports_and_internal_counters_of_every_cycle() {
         .unwrap()
         .inputs(&p)
         .unwrap();
-    let path = tb::target_dir().join("waves/test-speed-steps.vcd");
+    let path = tools::target_dir().join("waves/test-speed-steps.vcd");
     let outs = tb::waves::simulate_to_vcd(&p, &inputs, &path).unwrap();
 
     let names = [

@@ -771,9 +771,7 @@ fn a_driver_configures_x4_and_dt_and_reads_n3_by_hand() {
 // ---------------------------------------------------------------------------------------
 
 fn work_dir(name: &str) -> PathBuf {
-    let d = tb::target_dir().join("wishbone_top").join(name);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    tools::work_dir("wishbone_top", name).unwrap()
 }
 
 #[test]
@@ -813,36 +811,31 @@ fn the_c_header_compiles_and_a_c_program_agrees_with_the_map() {
           \tprintf(\"speed %lld %.9f\\n\", (long long)raw, (double)raw / (double)(1u << ENCSPEED_SPEED_FRAC_BITS));\n\
           \treturn 0;\n}\n";
     std::fs::write(dir.join("driver.c"), c).unwrap();
-    let cc = Command::new("gcc")
-        .current_dir(&dir)
-        .args([
-            "-std=c99",
-            "-Wall",
-            "-Wextra",
-            "-Werror",
-            "-pedantic-errors",
-        ])
-        .args(["-o", "driver", "driver.c"])
-        .output()
-        .expect("cannot run gcc");
-    assert!(
-        cc.status.success(),
-        "gcc in {}:\n{}",
-        dir.display(),
-        String::from_utf8_lossy(&cc.stderr)
-    );
+    tools::run(
+        Command::new("gcc")
+            .current_dir(&dir)
+            .args([
+                "-std=c99",
+                "-Wall",
+                "-Wextra",
+                "-Werror",
+                "-pedantic-errors",
+            ])
+            .args(["-o", "driver", "driver.c"]),
+        "gcc",
+    )
+    .unwrap();
     // The driver's speed of (b) and a negative one: -1.5 lines/dt = -98 304 raw.
     let neg = (-98_304i64) as u64;
     for (lo, hi, raw) in [
         (647_064u64, 0u64, 647_064i64),
         (neg & 0xFFFF_FFFF, neg >> 32, -98_304),
     ] {
-        let run = Command::new(dir.join("driver"))
-            .args([lo.to_string(), hi.to_string()])
-            .output()
-            .unwrap();
-        assert!(run.status.success());
-        let text = String::from_utf8_lossy(&run.stdout).into_owned();
+        let text = tools::run(
+            Command::new(dir.join("driver")).args([lo.to_string(), hi.to_string()]),
+            "driver",
+        )
+        .unwrap();
         let mut lines = text.lines();
         for (name, off) in LAYOUT {
             assert_eq!(lines.next(), Some(format!("{name} {off}").as_str()));
@@ -914,25 +907,7 @@ fn emitted_verilog_synthesises_for_ice40_without_latches() {
     let dir = work_dir("yosys");
     let v = dir.join("encspeed_wb.v");
     std::fs::write(&v, &hdl::emit::wb::emit_wb(&default_params())[0].1).unwrap();
-    let out = Command::new("yosys")
-        .arg("-p")
-        .arg(format!(
-            "read_verilog {}; synth_ice40 -top encspeed_wb; check -assert; stat",
-            v.display()
-        ))
-        .output()
-        .expect("yosys is installed by .ci/run");
-    let log = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "yosys failed:\n{log}\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let latches: Vec<&str> = log
-        .lines()
-        .filter(|l| l.trim_start().starts_with("Latch inferred"))
-        .collect();
-    assert!(latches.is_empty(), "latches inferred: {latches:#?}");
+    let log = tools::yosys_synth_ice40(&dir, "encspeed_wb", "encspeed_wb.v").unwrap();
     let stat = &log[log.rfind("Printing statistics").unwrap_or(0)..];
     let count = |cell: &str| -> u64 {
         stat.lines()

@@ -73,10 +73,8 @@ use crate::arith::latest_request::LatestRequest;
 use crate::estimator::speed_calc::SpeedFormat;
 use std::fmt;
 
-/// Narrowest counter width N (bits).
-pub const MIN_COUNTER_BITS: u32 = 8;
-/// Widest counter width N (bits).
-pub const MAX_COUNTER_BITS: u32 = 32;
+/// Counter widths N: the validated parameters' range (the core's counters feed this block).
+pub use crate::params::{MAX_COUNTER_BITS, MIN_COUNTER_BITS};
 /// Fewest fractional bits F (pc_count·2^(F−s) must be an integer for s ≤ 2).
 pub const MIN_FRAC_BITS: u32 = 2;
 /// Most fractional bits F (keeps S = N + F + 1 ≤ 57 bits).

@@ -43,8 +43,8 @@ use crate::bus::regmap::{
     c_define, c_registers, field, layout, markdown_registers, Access, Register, ADDR_BITS,
     SPAN_BYTES,
 };
+use crate::ecc::line_tap::IDENT_SUM_BITS;
 use crate::params::Params;
-use crate::top::ecc_top::IDENT_SUM_BITS;
 
 /// First byte offset of the window; the core's register file serves the offsets below.
 pub const ECC_BASE: u32 = 0x90;

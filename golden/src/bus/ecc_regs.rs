@@ -198,7 +198,7 @@ impl EccRegsModel {
         fits(g.t_max, 32, "ident_t_max");
         fits(g.p_min, 16, "ident_p_min");
         fits(g.p_max, 16, "ident_p_max");
-        let bound = 1i128 << (crate::top::ecc_top::IDENT_SUM_BITS - 1);
+        let bound = 1i128 << (crate::ecc::line_tap::IDENT_SUM_BITS - 1);
         for v in [g.sum_t, g.sum_sin, g.sum_cos] {
             assert!((-bound..bound).contains(&v), "sum {v} does not fit 72 bits");
         }

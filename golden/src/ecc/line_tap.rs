@@ -38,6 +38,10 @@ pub const LINE_BITS: u32 = 16;
 /// Width of `period`.
 pub const PERIOD_BITS: u32 = 32;
 
+/// Width of the identification sums gathered from this tap's lines and periods:
+/// `sum_bits(LINE_BITS, PERIOD_BITS)` = 72 ([`crate::ecc::ident_gatherer::sum_bits`]).
+pub const IDENT_SUM_BITS: u32 = crate::ecc::ident_gatherer::sum_bits(LINE_BITS, PERIOD_BITS);
+
 /// What the tap shows in one cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LineTapOutputs {

@@ -14,9 +14,9 @@
 //!
 //! In lines: N_c = s·(ΔM − Σₖ Eₖ·(Sₖ\[m_b\] − Sₖ\[m_a\])), Sₖ\[m\] = sin(2πk·m/K + pₖ), a sine
 //! table indexed by m mod K. First order (rigid disc): s = 1, E₁ = K·e/(2π), p₁ = θ0 (the
-//! DESIGN-NOTES form S\[m\] = sin(2π(m + m0)/K), m0 = K·θ0/(2π)). The estimator then divides
-//! N_c instead of ΔM by its time; s is a constant gain that hardware folds into the output
-//! scale.
+//! form S\[m\] = sin(2π(m + m0)/K), m0 = K·θ0/(2π), of
+//! docs/design-decisions.md#ecc-correction). The estimator then divides N_c instead of ΔM
+//! by its time; s is a constant gain that hardware folds into the output scale.
 
 use super::identify::HarmonicFit;
 use super::{Eccentricity, Model};

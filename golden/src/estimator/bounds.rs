@@ -28,8 +28,8 @@ pub fn er3_max(n1: f64) -> f64 {
 /// Worst-case relative error of the hardware's n3 at constant speed, for an estimate n1
 /// and dt = `dt_cycles` clock cycles.
 ///
-/// Derivation (DESIGN-NOTES §3, worked in docs/accuracy.md): with pulse instants rounded
-/// up to the clock, q_i ∈ [t_i, t_i + 1) cycles.
+/// Derivation (docs/design-decisions.md#table1-bound, worked in docs/accuracy.md): with
+/// pulse instants rounded up to the clock, q_i ∈ [t_i, t_i + 1) cycles.
 /// - High speed: Nep1 counts the q_i in [q_0, q_0 + dt). The q_i are whole cycles, so
 ///   q_i − q_0 ≤ dt − 1 and t_i − t_0 < dt: the count is that of exact instants in a
 ///   window between dt − 1 and dt cycles long, i.e. the exact estimator at a speed r' with

@@ -1,8 +1,9 @@
 //! Rairán's Table 1 as one step per clock (ts = one clock period), in the order of
-//! DESIGN-NOTES §3, with counters that saturate at the counter width instead of wrapping:
-//! the estimator engine of `encspeed_core` (layer 2, bit-true). The whole core, with its
-//! quadrature front end, speed calculators and faults, is [`crate::top::core::CoreModel`]
-//! (re-exported here); its Rairán pulse `lep` is a decoder step.
+//! docs/design-decisions.md#table1-order, with counters that saturate at the counter width
+//! instead of wrapping: the estimator engine of `encspeed_core` (layer 2, bit-true). The
+//! whole core, with its quadrature front end, speed calculators and faults, is
+//! [`crate::top::core::CoreModel`] (re-exported here); its Rairán pulse `lep` is a decoder
+//! step.
 
 use crate::params::{Params, MIN_DT_CYCLES};
 

@@ -1,6 +1,6 @@
 //! Bode data (frequency, gain, phase) and its CSV form.
 
-use super::SmallSignalError;
+use super::error::{SmallSignalError, MAX_FREQUENCIES};
 use std::fmt::Write as _;
 
 /// One frequency of a Bode plot.
@@ -65,9 +65,6 @@ impl Bode {
         out
     }
 }
-
-/// Most points [`log_frequencies`] returns.
-pub const MAX_FREQUENCIES: usize = 1_000_000;
 
 /// Logarithmically spaced frequencies from `lo_hz` to `hi_hz` (both included, exactly),
 /// with at least `points_per_decade` points per decade: n = ⌈ppd·log10(hi/lo)⌉ intervals

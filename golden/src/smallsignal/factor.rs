@@ -3,7 +3,8 @@
 //! ([`Factor::eval`]), and in closed polar form on s = jω ([`Factor::polar`]), which gives
 //! the phase without wrapping. The tests check that the two agree.
 
-use super::{BodePoint, SmallSignalError};
+use super::bode::BodePoint;
+use super::error::SmallSignalError;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

@@ -1,7 +1,10 @@
 //! The paper's transfer functions as named products of [`Factor`]s: eqs. (15), (16), (24),
 //! (27)–(29) and (33), built from a validated [`OperatingPoint`].
 
-use super::{Bode, BodePoint, Factor, Lead, OperatingPoint, Polar, SmallSignalError};
+use super::bode::{Bode, BodePoint};
+use super::error::SmallSignalError;
+use super::factor::{Factor, Lead, Polar};
+use super::operating_point::OperatingPoint;
 use num_complex::Complex64;
 use std::f64::consts::PI;
 

@@ -1,6 +1,6 @@
 //! The operating point of the small-signal models: resolution, speed and sample time.
 
-use super::SmallSignalError;
+use super::error::SmallSignalError;
 
 /// Seconds per minute: speeds are in r/min, times in s.
 const S_PER_MIN: f64 = 60.0;

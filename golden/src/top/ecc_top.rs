@@ -24,7 +24,7 @@
 //! `cfg_mode` reset both.
 
 use crate::baselines::baseline_speeds::BaselineFormat;
-use crate::ecc::ident_gatherer::{sum_bits, GatherInputs, GatherOutputs, IdentGatherer};
+use crate::ecc::ident_gatherer::{GatherInputs, GatherOutputs, IdentGatherer};
 use crate::ecc::line_tap::{LineTap, LINE_BITS, PERIOD_BITS};
 use crate::ecc::mt_corrector::{MtCorrectorModel, MtJob};
 use crate::ecc::n3_corrector::{N3CorrectorModel, N3Job};
@@ -48,14 +48,15 @@ pub const TABLE_DATA_BITS: u32 = 24;
 /// one after ([`crate::ecc::ident_gatherer`]).
 pub const IDENT_DONE_AFTER_INDEX: u64 = 2;
 
-/// Width of the identification sums: `sum_bits(LINE_BITS, PERIOD_BITS)` = 72.
-pub const IDENT_SUM_BITS: u32 = sum_bits(LINE_BITS, PERIOD_BITS);
+/// Width of the identification sums (defined beside the tap's widths it derives from).
+pub use crate::ecc::line_tap::IDENT_SUM_BITS;
 
-/// Why `p` cannot have the eccentricity corrector (the sine table needs a multiple of 4
-/// lines, 4 ≤ K ≤ 2^16), or Ok.
+// The table holds one entry per line: its address width bounds the line count.
+const _: () = assert!(crate::params::ECC_MAX_LINES as u64 == 1u64 << TABLE_ADDRESS_BITS);
+
+/// Why `p` cannot have the eccentricity corrector ([`Params::check_ecc`]), or Ok.
 pub fn check(p: &Params) -> Result<(), String> {
-    crate::ecc::ecc_delta::check_params(p.lines(), TABLE_ADDRESS_BITS, TABLE_DATA_BITS)
-        .map_err(|e| format!("encspeed_ecc: {e}"))
+    p.check_ecc().map_err(|e| format!("encspeed_ecc: {e}"))
 }
 
 /// Inputs of `encspeed_ecc` in one cycle.

@@ -120,7 +120,7 @@ const SHIFT_BITS: usize = 8;
 #[macro_export]
 macro_rules! baseline_speeds_type {
     ($n:expr, $f:expr) => {
-        $crate::BaselineSpeeds<{ $n }, { $f }, { $n + $f + 1 }>
+        $crate::baselines::baseline_speeds::BaselineSpeeds<{ $n }, { $f }, { $n + $f + 1 }>
     };
 }
 

@@ -74,7 +74,7 @@ const SHIFT_BITS: usize = 8;
 #[macro_export]
 macro_rules! wb_regs_type {
     ($n:expr, $f:expr, $c:expr, $fb:expr, $g:expr) => {
-        $crate::WbRegs<{ $n }, { $n + $f + 1 }, { $c }, { $fb }, { $g }>
+        $crate::bus::wb_regs::WbRegs<{ $n }, { $n + $f + 1 }, { $c }, { $fb }, { $g }>
     };
 }
 

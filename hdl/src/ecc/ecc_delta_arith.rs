@@ -1,10 +1,11 @@
 //! Combinational datapath of [`EccDelta`](crate::EccDelta), written as `Verilog::Custom`
 //! because `#[hdl_gen]` does not emit sign extension, arithmetic shifts and mixed-width
-//! sums with the right widths (../shared/RUST-HDL-NOTES.md). Its `update()` repeats the
-//! Verilog operation by operation in the same widths, written independently of the golden
-//! model; rust-hdl and Icarus are both checked against `golden::ecc::ecc_delta` through the
-//! `EccDelta` tests. No multiplier wider than 3 bits: the wide product is the shift-add
-//! sequence of `EccDelta`, one addition of this block per clock.
+//! sums with the right widths (docs/design-decisions.md#rust-hdl-rules, D10 and R5). Its
+//! `update()` repeats the Verilog operation by operation in the same widths, written
+//! independently of the golden model; rust-hdl and Icarus are both checked against
+//! `golden::ecc::ecc_delta` through the `EccDelta` tests. No multiplier wider than 3 bits:
+//! the wide product is the shift-add sequence of `EccDelta`, one addition of this block per
+//! clock.
 //!
 //! Four independent functions (A = address bits, D = table width, 8 ≤ D ≤ 24):
 //! 1. **decode** a position h (33-bit half-steps) at s = min(`shift`, 2): line

@@ -11,7 +11,7 @@
 //!
 //! Everything wider than S is done in 64-bit locals (|n3| < 2^48, |δ| < 2^39: no wrap), and
 //! widths change by shifting bits in at the top (the style of `ecc_mt_speed.rs`): rust-hdl
-//! emits casts between widths badly (../shared/RUST-HDL-NOTES.md).
+//! emits casts between widths badly (docs/design-decisions.md#rust-hdl-rules, D7 and R3).
 
 use golden::ecc::ecc_delta::DELTA_BITS;
 use golden::ecc::ecc_n3::MUL_STEPS;

@@ -4,6 +4,7 @@
 //! for them (no dates, no paths of this machine), so `generated/` can be checked for
 //! staleness byte for byte.
 
+pub mod tops;
 pub mod wb;
 
 use crate::sim::core_sim::build_core;

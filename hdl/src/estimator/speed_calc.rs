@@ -1,8 +1,8 @@
 //! Speed calculator: Rairán's n1, n2 and n3 from the registers Nep1 and Ndt1, as signed
-//! fixed-point speeds, by a sequential divider and a sequential shift-add multiplier. A
-//! standalone block (not yet in `encspeed_core`); its bit-true model is
-//! [`golden::estimator::speed_calc::SpeedCalcModel`], whose module docs state the values, the rounding
-//! rule and the timing this block implements.
+//! fixed-point speeds, by a sequential divider and a sequential shift-add multiplier.
+//! `encspeed_core` starts one at each Table 1 update (and a `SpeedTag` beside it); its
+//! bit-true model is [`golden::estimator::speed_calc::SpeedCalcModel`], whose module docs
+//! state the values, the rounding rule and the timing this block implements.
 //!
 //! # Generation parameters
 //!
@@ -102,7 +102,7 @@ const SHIFT_BITS: usize = 8;
 #[macro_export]
 macro_rules! speed_calc_type {
     ($n:expr, $f:expr) => {
-        $crate::SpeedCalc<{ $n }, { $f }, { 2 * $n + 1 }, { $n + $f + 1 }>
+        $crate::estimator::speed_calc::SpeedCalc<{ $n }, { $f }, { 2 * $n + 1 }, { $n + $f + 1 }>
     };
 }
 

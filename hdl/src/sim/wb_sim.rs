@@ -144,33 +144,15 @@ mod tests {
         let top = include_str!("../../../tb/verilator/wb_waivers.vlt");
         for p in [small(), Params::new(Spec::default()).unwrap()] {
             let v = build_wb(&p).verilog("encspeed_wb");
-            let target = match std::env::var_os("CARGO_TARGET_DIR") {
-                Some(d) => std::path::PathBuf::from(d),
-                None => std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../target")),
-            };
-            let dir = target
-                .join("block_lint")
-                .join(format!("encspeed_wb-{}", p.counter_bits()));
-            std::fs::create_dir_all(&dir).unwrap();
-            std::fs::write(dir.join("encspeed_wb.v"), &v).unwrap();
+            let dir = tools::work_dir("block_lint", &format!("encspeed_wb-{}", p.counter_bits()))
+                .unwrap();
             let waivers = format!(
                 "{}\n{}",
                 core.replace("*encspeed_core.v", "*encspeed_wb.v"),
                 top.trim_start_matches("`verilator_config")
             );
-            std::fs::write(dir.join("waivers.vlt"), waivers).unwrap();
-            let out = std::process::Command::new("verilator")
-                .current_dir(&dir)
-                .args(["--lint-only", "-Wall", "--top-module", "encspeed_wb"])
-                .args(["waivers.vlt", "encspeed_wb.v"])
-                .output()
-                .expect("cannot run verilator");
-            let text = String::from_utf8_lossy(&out.stderr);
-            assert!(
-                out.status.success() && !text.contains("%Warning") && !text.contains("%Error"),
-                "verilator --lint-only -Wall in {}:\n{text}",
-                dir.display()
-            );
+            tools::stage(&dir, &[("encspeed_wb.v", &v), ("waivers.vlt", &waivers)]).unwrap();
+            tools::verilator_lint(&dir, "encspeed_wb", &["waivers.vlt", "encspeed_wb.v"]).unwrap();
         }
     }
 }

@@ -16,6 +16,9 @@
 //! P = 2N + 1 (the speed calculator's products).
 
 use crate::baselines::baseline_speeds::BaselineSpeeds;
+use crate::baselines::et_timer::EtTimer;
+use crate::baselines::mt_counter::MtCounter;
+use crate::baselines::pc_counter::PcCounter;
 use crate::estimator::mode_scale::ModeScale;
 use crate::estimator::speed_calc::SpeedCalc;
 use crate::estimator::speed_hold::SpeedHold;
@@ -28,7 +31,6 @@ use crate::frontend::quadrature_decoder::QuadratureDecoder;
 use crate::frontend::startup::Startup;
 use crate::frontend::two_flop_sync::TwoFlopSync;
 use crate::top::fault_flags::FaultFlags;
-use crate::{EtTimer, MtCounter, PcCounter};
 use golden::params::{
     Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
 };

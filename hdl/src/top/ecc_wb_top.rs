@@ -81,7 +81,7 @@ pub struct EncspeedEccWb<const N: usize, const P: usize, const S: usize, const C
 impl<const N: usize, const P: usize, const S: usize, const CW: usize> EncspeedEccWb<N, P, S, CW> {
     /// The top of validated parameters `p`; panics where [`golden::top::ecc_top::check`]
     /// refuses them or unless `N` is their counter width (the dispatch in
-    /// [`build_ecc_wb`] guarantees it).
+    /// [`build_ecc_wb`](crate::sim::ecc_wb_sim::build_ecc_wb) guarantees it).
     pub fn new(p: &Params) -> Self {
         Self {
             clock: Default::default(),

@@ -12,7 +12,7 @@
 //!
 //! # Parameters
 //! N = `counter_bits` (8..=32), P = 2N + 1, S = N + 17 as for the core
-//! ([`build_wb`] picks them from [`Params`]); the register file's other widths are the
+//! ([`build_wb`](crate::sim::wb_sim::build_wb) picks them from [`Params`]); the register file's other widths are the
 //! core's fixed ones (C = [`POSITION_BITS`], FB = [`FILTER_BITS`], G = [`ERROR_COUNT_BITS`]).
 //!
 //! # Ports
@@ -77,7 +77,7 @@ pub struct EncspeedWb<const N: usize, const P: usize, const S: usize> {
 
 impl<const N: usize, const P: usize, const S: usize> EncspeedWb<N, P, S> {
     /// The core and register file of validated parameters `p`; panics unless `N` is
-    /// `p`'s counter width (the dispatch in [`build_wb`] guarantees it).
+    /// `p`'s counter width (the dispatch in [`build_wb`](crate::sim::wb_sim::build_wb) guarantees it).
     pub fn new(p: &Params) -> Self {
         Self {
             clock: Default::default(),

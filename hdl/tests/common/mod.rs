@@ -1,43 +1,11 @@
-//! Shared by the block tests: where build products go, and Icarus runs.
+//! Shared by the block tests: stimuli, clock edges and Icarus replay benches (running the
+//! tools, and where their work goes, is the `tools` crate's).
 
 // Each test binary includes this module and uses a subset of it.
 #![allow(dead_code)]
 
 use rust_hdl::prelude::{simulate, Block};
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
-/// The workspace's `target/` (honouring `CARGO_TARGET_DIR`): never the source tree.
-pub fn target_dir() -> PathBuf {
-    match std::env::var_os("CARGO_TARGET_DIR") {
-        Some(d) => d.into(),
-        None => PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../target")),
-    }
-}
-
-/// Compile `sources` (in `dir`) with `iverilog -Wall -g2005` plus `extra` arguments,
-/// asserting that it compiles without a single warning, run the result with `vvp`, and
-/// return what it printed.
-pub fn icarus_run(dir: &Path, extra: &[String], sources: &[String]) -> String {
-    let compile = Command::new("iverilog")
-        .current_dir(dir)
-        .args(["-Wall", "-g2005", "-o", "tb.vvp"])
-        .args(extra)
-        .args(sources)
-        .output()
-        .expect("cannot run iverilog (install it: see .ci/run)");
-    let warnings = String::from_utf8_lossy(&compile.stderr);
-    assert!(
-        compile.status.success() && warnings.trim().is_empty(),
-        "iverilog -Wall:\n{warnings}"
-    );
-    let run = Command::new("vvp")
-        .current_dir(dir)
-        .args(["-n", "tb.vvp"])
-        .output()
-        .expect("cannot run vvp");
-    String::from_utf8_lossy(&run.stdout).into_owned()
-}
+use std::path::Path;
 
 /// splitmix64: a fixed, reproducible stream of random numbers for the Icarus runs (each
 /// test adds its own operand shapes on top of `next`).
@@ -154,16 +122,28 @@ pub fn replay(
     vectors: &str,
     counted: usize,
 ) {
-    let dir = target_dir().join(suite).join(dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(dir.join(format!("{module}.v")), verilog).unwrap();
-    std::fs::write(dir.join(format!("{module}_tb.v")), tb).unwrap();
-    std::fs::write(dir.join("vectors.txt"), vectors).unwrap();
-    let text = icarus_run(
+    let dir = tools::work_dir(suite, dir).unwrap();
+    let (v, v_tb) = (format!("{module}.v"), format!("{module}_tb.v"));
+    tools::stage(
+        &dir,
+        &[(&v, verilog), (&v_tb, tb), ("vectors.txt", vectors)],
+    )
+    .unwrap();
+    assert_bench_passes(
         &dir,
         &[],
-        &[format!("{module}_tb.v"), format!("{module}.v")],
+        &[&v_tb, &v],
+        vectors,
+        &format!("{counted} counted"),
     );
+}
+
+/// Compile the self-checking bench `sources` in `dir` (`iverilog` with `args`, not one
+/// warning), run it in `vvp`, and assert that its `RESULT` line reads `RESULT PASS <n> cycles
+/// <tail>`, `n` being the lines of `vectors`.
+pub fn assert_bench_passes(dir: &Path, args: &[&str], sources: &[&str], vectors: &str, tail: &str) {
+    tools::iverilog(dir, args, sources, "tb.vvp").unwrap();
+    let text = tools::vvp(dir, "tb.vvp", &[]).unwrap();
     let result = text
         .lines()
         .find(|l| l.starts_with("RESULT"))
@@ -171,7 +151,7 @@ pub fn replay(
     let cycles = vectors.lines().count();
     assert_eq!(
         result,
-        format!("RESULT PASS {cycles} cycles {counted} counted"),
+        format!("RESULT PASS {cycles} cycles {tail}"),
         "\n{text}"
     );
 }

@@ -20,7 +20,7 @@ use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use crate::Outcome;
+use super::Outcome;
 
 /// Fewest lines: the identification needs at least 8 periods.
 const MIN_LINES: u32 = 8;

@@ -1,0 +1,128 @@
+//! The shipped tops: the one list that `encspeed generate`, `encspeed docs`, `encspeed synth`
+//! and the tests that prove `generated/` current iterate over.
+//!
+//! A new top is added here (its module, its files, whether it needs the eccentricity
+//! corrector's parameters) and every command and test that walks [`Top::ALL`] takes it up.
+
+use golden::params::Params;
+
+/// One shipped top-level module and the files generated with it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Top {
+    /// `encspeed_core`: the quadrature front end, Rairán's estimator and the baselines
+    /// (`encspeed_core.v` and its manifest `encspeed_core.toml`).
+    Core,
+    /// `encspeed_wb`: the core behind a Wishbone B4 slave (`encspeed_wb.v`,
+    /// `encspeed_regs.h`).
+    Wb,
+    /// `encspeed_ecc`: the core with the eccentricity-corrected speeds and the online
+    /// identification (`encspeed_ecc.v`).
+    Ecc,
+    /// `encspeed_ecc_wb`: `encspeed_ecc` behind one Wishbone window (`encspeed_ecc_wb.v`,
+    /// `encspeed_ecc_regs.h`).
+    EccWb,
+}
+
+impl Top {
+    /// Every shipped top, in the order `generate` writes them.
+    pub const ALL: [Top; 4] = [Top::Core, Top::Wb, Top::Ecc, Top::EccWb];
+
+    /// The Verilog module name, which is also the stem of its file.
+    pub fn module(self) -> &'static str {
+        match self {
+            Top::Core => super::TOP_MODULE,
+            Top::Wb => golden::top::wb_top::TOP_MODULE,
+            Top::Ecc => crate::sim::ecc_sim::ECC_TOP_MODULE,
+            Top::EccWb => golden::top::ecc_wb_top::ECC_WB_TOP_MODULE,
+        }
+    }
+
+    /// The Verilog file's name, `<module>.v`.
+    pub fn verilog_file(self) -> String {
+        format!("{}.v", self.module())
+    }
+
+    /// True for the tops with the eccentricity corrector, which exist only where
+    /// [`golden::top::ecc_top::check`] accepts the parameters (a multiple of 4 lines).
+    pub fn has_ecc(self) -> bool {
+        matches!(self, Top::Ecc | Top::EccWb)
+    }
+
+    /// Whether this top can be generated for `p`: Ok, or why not.
+    pub fn check(self, p: &Params) -> Result<(), String> {
+        if self.has_ecc() {
+            golden::top::ecc_top::check(p)
+        } else {
+            Ok(())
+        }
+    }
+
+    /// Every file of this top for `p` as (file name, contents), the Verilog first.
+    /// Deterministic: a pure function of `p`. An error where [`Top::check`] refuses `p`.
+    pub fn files(self, p: &Params) -> Result<Vec<(String, String)>, String> {
+        let named = |v: Vec<(&'static str, String)>| -> Vec<(String, String)> {
+            v.into_iter().map(|(n, t)| (n.to_string(), t)).collect()
+        };
+        Ok(match self {
+            Top::Core => {
+                let e = super::emit_core(p);
+                vec![
+                    (self.verilog_file(), e.verilog),
+                    (format!("{}.toml", self.module()), e.manifest),
+                ]
+            }
+            Top::Wb => named(super::wb::emit_wb(p)),
+            Top::Ecc => vec![(self.verilog_file(), super::emit_ecc(p)?)],
+            Top::EccWb => named(super::wb::emit_ecc_wb(p)?),
+        })
+    }
+
+    /// The Verilog of this top for `p` (the first of [`Top::files`]).
+    pub fn verilog(self, p: &Params) -> Result<String, String> {
+        let mut files = self.files(p)?;
+        Ok(files.swap_remove(0).1)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use golden::params::Spec;
+
+    /// Each top's Verilog file is first among its files, is named after its module, and
+    /// declares that module; the ECC tops are refused, with the reason, for a line count
+    /// the sine table cannot take.
+    #[test]
+    fn files_are_named_after_their_modules() {
+        let p = Params::new(Spec {
+            lines: 16,
+            counter_bits: 10,
+            dt_cycles: 200,
+            clock_hz: 1e6,
+            timeout_s: 0.1,
+        })
+        .unwrap();
+        for top in Top::ALL {
+            let files = top.files(&p).unwrap();
+            assert_eq!(files[0].0, top.verilog_file());
+            assert!(
+                files[0].1.contains(&format!("module {}", top.module())),
+                "{} does not declare module {}",
+                files[0].0,
+                top.module()
+            );
+        }
+        let odd = Params::new(Spec {
+            lines: 10,
+            counter_bits: 10,
+            dt_cycles: 200,
+            clock_hz: 1e6,
+            timeout_s: 0.1,
+        })
+        .unwrap();
+        for top in Top::ALL {
+            assert_eq!(top.check(&odd).is_err(), top.has_ecc(), "{top:?}");
+            assert_eq!(top.files(&odd).is_err(), top.has_ecc(), "{top:?}");
+        }
+    }
+}

@@ -1,0 +1,62 @@
+//! `encspeed generate`: write encspeed_core.v and its manifest encspeed_core.toml,
+//! encspeed_wb.v and encspeed_regs.h, and for a multiple of 4 lines also encspeed_ecc.v,
+//! encspeed_ecc_wb.v and encspeed_ecc_regs.h.
+
+use clap::Args;
+use golden::params::Params;
+use hdl::Top;
+use std::path::{Path, PathBuf};
+
+use super::spec::SpecArgs;
+use super::Outcome;
+
+/// Options of `encspeed generate`.
+#[derive(Args)]
+pub struct GenerateArgs {
+    #[command(flatten)]
+    spec: SpecArgs,
+    /// Output directory.
+    #[arg(long, default_value = "generated")]
+    out: PathBuf,
+}
+
+/// `encspeed generate`.
+pub fn run(args: &GenerateArgs) -> Outcome {
+    args.spec.run(|p| generate(p, &args.out))
+}
+
+/// Every file of every shipped top ([`hdl::Top::ALL`]) into `out`. A top the parameters
+/// cannot have (the eccentricity tops need a multiple of 4 lines) is reported on stderr
+/// and the others are written.
+fn generate(p: &Params, out: &Path) -> Outcome {
+    let write = |name: &str, text: &str| {
+        std::fs::create_dir_all(out)
+            .and_then(|_| std::fs::write(out.join(name), text))
+            .map_err(|e| (1, format!("cannot write {}: {e}", out.join(name).display())))
+    };
+    let mut written = Vec::new();
+    let mut refused: Vec<(String, String)> = Vec::new();
+    for top in Top::ALL {
+        match top.files(p) {
+            Ok(files) => {
+                for (name, text) in files {
+                    write(&name, &text)?;
+                    written.push(out.join(name).display().to_string());
+                }
+            }
+            Err(why) => refused.push((top.verilog_file(), why)),
+        }
+    }
+    if let Some((_, why)) = refused.first() {
+        let names: Vec<&str> = refused.iter().map(|(n, _)| n.as_str()).collect();
+        eprintln!("{} not written: {why}", names.join(" and "));
+    }
+    println!(
+        "wrote {} ({}-bit counters, dt = {} cycles, ω_lim = {} rev/s)",
+        written.join(", "),
+        p.counter_bits(),
+        p.dt_cycles(),
+        p.omega_lim_rps()
+    );
+    Ok(())
+}

@@ -1,0 +1,16 @@
+//! The subcommands of `encspeed`, one module each (its options and what it runs), and
+//! the generation parameters they share (`spec`).
+
+pub mod accuracy;
+pub mod bench;
+pub mod bode;
+pub mod docs;
+pub mod ecc_ripple;
+pub mod generate;
+pub mod identify;
+pub mod simulate;
+pub mod spec;
+pub mod synth;
+
+/// What a command returns: on failure the exit code and the message.
+pub type Outcome = Result<(), (u8, String)>;
