@@ -34,9 +34,8 @@ enum Cmd {
     Simulate(simulate::SimulateArgs),
     /// Measure simulation speed (cycles/s) of the golden model, rust-hdl and Verilator.
     Bench(bench::BenchArgs),
-    /// Synthesise the Wishbone top encspeed_wb (core and register file) with yosys
-    /// (synth_ice40) and place and route it with nextpnr-ice40: logic cells, I/O and
-    /// maximum clock frequency (a benchmark).
+    /// Resource and timing report of the shipped tops on iCE40HX8K and iCE40UP5K: yosys
+    /// synth_ice40 cells, nextpnr-ice40 logic cells and Fmax per seed, critical path.
     Synth(synth::SynthArgs),
     /// Measured and model gain/phase of a speed estimator (CSV, SVG).
     ///

@@ -1,148 +1,355 @@
-//! `encspeed synth`: yosys `synth_ice40` and nextpnr-ice40 place and route of the Wishbone
-//! top encspeed_wb (logic cells, I/O, maximum clock frequency), or yosys alone on
-//! encspeed_ecc (cells by type).
+//! `encspeed synth`: the resource and timing report of the shipped tops. For each top of
+//! `hdl::Top::ALL` and each device, yosys `synth_ice40` (with `-dsp` where the device has
+//! DSPs) gives the cells, and nextpnr-ice40 places and routes the top inside
+//! `tools::fpga`'s boundary wrapper (every port registered, so a top of any width places on
+//! any package) once per seed, with the clock constrained to the generation clock. The
+//! report is a Markdown table (`--out`, default `target/synth/report.md`), also printed; an
+//! `--out` file that holds the [`BEGIN`]/[`END`] markers (docs/resources.md) keeps its text
+//! around them.
+//!
+//! `--require-timing` makes a routed Fmax below the clock, or a top that does not fit, an
+//! error (exit 1): the static timing check CI runs.
 
 use clap::Args;
 use golden::params::Params;
+use hdl::emit::tops::Top;
+use std::fmt::Write;
+use std::path::PathBuf;
+use tools::fpga::{self, Cells, Routed};
 
 use super::spec::SpecArgs;
 use super::Outcome;
+
+/// An iCE40 the report covers: nextpnr-ice40 device and package, and whether yosys may map
+/// multipliers to its DSPs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Device {
+    name: &'static str,
+    package: &'static str,
+    dsp: bool,
+}
+
+/// iCE40HX8K-CT256 (7 680 logic cells, 32 block RAMs, no DSP) and iCE40UP5K-SG48 (5 280
+/// logic cells, 30 block RAMs, 8 SB_MAC16).
+const DEVICES: [Device; 2] = [
+    Device {
+        name: "hx8k",
+        package: "ct256",
+        dsp: false,
+    },
+    Device {
+        name: "up5k",
+        package: "sg48",
+        dsp: true,
+    },
+];
 
 /// Options of `encspeed synth`.
 #[derive(Args)]
 pub struct SynthArgs {
     #[command(flatten)]
     spec: SpecArgs,
-    /// nextpnr-ice40 device option, e.g. hx8k, up5k, lp8k.
-    #[arg(long, default_value = "hx8k")]
-    device: String,
-    /// Package, e.g. ct256 (hx8k), sg48 (up5k).
-    #[arg(long, default_value = "ct256")]
-    package: String,
-    /// wb: encspeed_wb, synthesised, placed and routed; ecc: encspeed_ecc, synthesised
-    /// only (cells by type: its ports outnumber any iCE40's pins).
-    #[arg(long, default_value = "wb", value_parser = ["wb", "ecc"])]
+    /// The tops to report: `all`, or a comma-separated list of module names with or without
+    /// the `encspeed_` prefix (core, wb, ecc, ecc_wb).
+    #[arg(long, default_value = "all")]
     top: String,
+    /// The devices: `all`, or a comma-separated list of hx8k (CT256) and up5k (SG48).
+    #[arg(long, default_value = "all")]
+    device: String,
+    /// nextpnr placement seeds, comma-separated; one place and route per seed.
+    #[arg(long, default_value = "1,2,3", value_delimiter = ',')]
+    seeds: Vec<u32>,
+    /// Where to write the Markdown report (default target/synth/report.md).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Exit 1 when a top does not fit or misses the clock on any seed.
+    #[arg(long)]
+    require_timing: bool,
 }
 
-/// `encspeed synth`: `synth` for `--top wb`, `synth_ecc` for `--top ecc`.
+/// The tops named by `--top`.
+fn tops(list: &str) -> Result<Vec<Top>, String> {
+    if list == "all" {
+        return Ok(Top::ALL.to_vec());
+    }
+    list.split(',')
+        .map(|name| {
+            let name = name.trim();
+            Top::ALL
+                .into_iter()
+                .find(|t| t.module() == name || t.module().strip_prefix("encspeed_") == Some(name))
+                .ok_or_else(|| {
+                    let known: Vec<&str> = Top::ALL.iter().map(|t| t.module()).collect();
+                    format!("unknown top `{name}` (the tops: {})", known.join(", "))
+                })
+        })
+        .collect()
+}
+
+/// The devices named by `--device`.
+fn devices(list: &str) -> Result<Vec<Device>, String> {
+    if list == "all" {
+        return Ok(DEVICES.to_vec());
+    }
+    list.split(',')
+        .map(|name| {
+            DEVICES
+                .into_iter()
+                .find(|d| d.name == name.trim())
+                .ok_or_else(|| format!("unknown device `{name}` (hx8k or up5k)"))
+        })
+        .collect()
+}
+
+/// One row of the report: a top on a device.
+struct Row {
+    top: Top,
+    device: Device,
+    cells: Cells,
+    /// One per seed.
+    routed: Vec<(u32, Routed)>,
+}
+
+/// `encspeed synth`.
 pub fn run(args: &SynthArgs) -> Outcome {
+    let tops = tops(&args.top).map_err(|e| (2, e))?;
+    let devices = devices(&args.device).map_err(|e| (2, e))?;
+    if args.seeds.is_empty() {
+        return Err((2, "--seeds: give at least one seed".into()));
+    }
     args.spec.run(|p| {
-        if args.top == "ecc" {
-            synth_ecc(p)
-        } else {
-            synth(p, &args.device, &args.package)
+        let mut rows = Vec::new();
+        for &top in &tops {
+            if let Err(e) = top.check(p) {
+                println!("{}: not generated for these parameters: {e}", top.module());
+                continue;
+            }
+            for &device in &devices {
+                let row = place_and_route(p, top, device, &args.seeds).map_err(|e| (1, e))?;
+                print_row(&row, p);
+                rows.push(row);
+            }
         }
+        let report = markdown(p, &rows);
+        let out = match &args.out {
+            Some(f) => f.clone(),
+            None => tools::work_dir("synth", "")
+                .map_err(|e| (1, e))?
+                .join("report.md"),
+        };
+        let text = match std::fs::read_to_string(&out) {
+            Ok(old) => into_markers(&old, &report).unwrap_or(report),
+            Err(_) => report,
+        };
+        std::fs::write(&out, text).map_err(|e| (1, format!("{}: {e}", out.display())))?;
+        println!("report: {}", out.display());
+        let mhz = p.clock_hz() / 1e6;
+        let failed: Vec<String> = rows
+            .iter()
+            .filter(|r| !meets(r, mhz))
+            .map(|r| format!("{} on {}", r.top.module(), r.device.name))
+            .collect();
+        if args.require_timing && !failed.is_empty() {
+            return Err((
+                1,
+                format!("timing not met at {mhz} MHz: {}", failed.join(", ")),
+            ));
+        }
+        Ok(())
     })
 }
 
-/// yosys `synth_ice40` of `encspeed_ecc` for `p`: the cells by type.
-fn synth_ecc(p: &Params) -> Outcome {
-    let dir = tools::work_dir("synth-ecc", "").map_err(|e| (1, e))?;
-    let verilog = hdl::emit_ecc(p).map_err(|e| (2, e))?;
-    std::fs::write(dir.join("encspeed_ecc.v"), verilog).map_err(|e| (1, e.to_string()))?;
-    let _ = std::fs::remove_file(dir.join("stat.txt"));
-    tools::run(
-        std::process::Command::new("yosys").current_dir(&dir).args([
-            "-q",
-            "-p",
-            "read_verilog encspeed_ecc.v; synth_ice40 -top encspeed_ecc; tee -q -o stat.txt stat",
-        ]),
-        "yosys",
-    )
-    .map_err(|e| (1, e))?;
-    let stat = std::fs::read_to_string(dir.join("stat.txt")).map_err(|e| (1, e.to_string()))?;
-    println!(
-        "encspeed_ecc, yosys synth_ice40, {}-bit counters, K = {}:",
-        p.counter_bits(),
-        p.lines()
-    );
-    let mut flip_flops = 0u64;
-    for l in stat.lines().map(str::trim) {
-        let mut it = l.split_whitespace();
-        if let (Some(cell), Some(n)) = (it.next(), it.next().and_then(|n| n.parse::<u64>().ok())) {
-            if cell.starts_with("SB_") {
-                println!("  {cell:<14} {n}");
-                if cell.starts_with("SB_DFF") {
-                    flip_flops += n;
-                }
-            }
-        }
-    }
-    println!("  flip-flops     {flip_flops}");
-    Ok(())
+/// The lines that enclose the report in a document that has more around it
+/// (docs/resources.md): `--out` into such a file replaces only what lies between them.
+const BEGIN: &str = "<!-- begin encspeed synth -->";
+const END: &str = "<!-- end encspeed synth -->";
+
+/// `doc` with the text between [`BEGIN`] and [`END`] replaced by `report`; None when `doc`
+/// lacks the markers.
+fn into_markers(doc: &str, report: &str) -> Option<String> {
+    let b = doc.find(BEGIN)? + BEGIN.len();
+    let e = doc[b..].find(END)? + b;
+    Some(format!("{}\n{report}{}", &doc[..b], &doc[e..]))
 }
 
-fn synth(p: &Params, device: &str, package: &str) -> Outcome {
-    let dir = tools::work_dir("synth", "").map_err(|e| (1, e))?;
-    // The complete core has about 430 port bits, more than any iCE40 package has pins: place
-    // and route the Wishbone top `encspeed_wb` (the core behind its register file, about 80
-    // pins), as a CPU-attached design would be.
-    hdl::emit::wb::write_all(p, &dir).map_err(|e| (1, e.to_string()))?;
-    let clock = dir.join("clock.py");
-    std::fs::write(
-        &clock,
-        format!("ctx.addClock(\"clock\", {})\n", p.clock_hz() / 1e6),
-    )
-    .map_err(|e| (1, e.to_string()))?;
-    let run = |cmd: &mut std::process::Command, what: &str| {
-        tools::run(cmd.current_dir(&dir), what).map_err(|e| (1, e))
-    };
-    run(
-        std::process::Command::new("yosys").args([
-            "-q",
-            "-p",
-            "read_verilog encspeed_wb.v; synth_ice40 -top encspeed_wb -json core.json",
-        ]),
-        "yosys",
+/// Synthesis once, then place and route per seed, in `target/synth/<top>-<device>/`.
+fn place_and_route(p: &Params, top: Top, device: Device, seeds: &[u32]) -> Result<Row, String> {
+    let dir = tools::work_dir("synth", &format!("{}-{}", top.module(), device.name))?;
+    let verilog = top.verilog(p)?;
+    let ports = fpga::module_ports(&verilog, top.module())?;
+    let wrapper = fpga::boundary_wrapper(top.module(), &ports)?;
+    let file = top.verilog_file();
+    tools::stage(&dir, &[(&file, &verilog), ("boundary.v", &wrapper)])?;
+    let boundary = format!("{}_boundary", top.module());
+    // The cells of the top alone (what a user's design pays), then the wrapped design
+    // that is placed.
+    let cells = fpga::synth_ice40_json(&dir, &[&file], top.module(), device.dsp, "top.json")?;
+    fpga::synth_ice40_json(
+        &dir,
+        &[&file, "boundary.v"],
+        &boundary,
+        device.dsp,
+        "wrapped.json",
     )?;
-    let log = run(
-        std::process::Command::new("nextpnr-ice40")
-            .arg(format!("--{device}"))
-            .args([
-                "--package",
-                package,
-                "--json",
-                "core.json",
-                "--asc",
-                "core.asc",
-            ])
-            .args([
-                "--pcf-allow-unconstrained",
-                "--timing-allow-fail",
-                "--seed",
-                "1",
-                "--pre-pack",
-                "clock.py",
-            ]),
-        "nextpnr-ice40",
-    )?;
-    // Utilisation is reported once (the line with a percentage); the routed Fmax is the
-    // last frequency line.
-    let tidy = |l: &str| {
-        let l = l.trim();
-        let l = l
-            .strip_prefix("Info:")
-            .or(l.strip_prefix("Warning:"))
-            .unwrap_or(l);
-        l.trim().to_string()
-    };
-    let first = |key: &str| {
-        log.lines()
-            .find(|l| l.contains(key) && l.contains('%'))
-            .map(tidy)
-    };
-    let last = |key: &str| log.lines().rev().find(|l| l.contains(key)).map(tidy);
-    let missing = |key: &str| (1, format!("no `{key}` in the nextpnr log"));
-    println!(
-        "encspeed_wb on {device} {package}, {}-bit counters, clock constraint {} MHz",
-        p.counter_bits(),
-        p.clock_hz() / 1e6
-    );
-    for key in ["ICESTORM_LC:", "SB_IO:"] {
-        println!("{}", first(key).ok_or_else(|| missing(key))?);
+    let mut routed = Vec::new();
+    for &seed in seeds {
+        let r = fpga::nextpnr_ice40(
+            &dir,
+            "wrapped.json",
+            device.name,
+            device.package,
+            p.clock_hz() / 1e6,
+            seed,
+        )?;
+        let fits = matches!(r, Routed::Done { .. });
+        routed.push((seed, r));
+        if !fits {
+            break; // another seed places the same cells
+        }
     }
-    let key = "Max frequency for clock";
-    println!("{}", last(key).ok_or_else(|| missing(key))?);
-    Ok(())
+    Ok(Row {
+        top,
+        device,
+        cells,
+        routed,
+    })
+}
+
+/// True when every seed placed and routed at or above `mhz`.
+fn meets(r: &Row, mhz: f64) -> bool {
+    r.routed
+        .iter()
+        .all(|(_, x)| matches!(x, Routed::Done { fmax_mhz, .. } if *fmax_mhz >= mhz))
+}
+
+fn fmax_list(r: &Row) -> String {
+    r.routed
+        .iter()
+        .map(|(seed, x)| match x {
+            Routed::Done { fmax_mhz, .. } => format!("{fmax_mhz:.1} (seed {seed})"),
+            Routed::DoesNotFit(_) => "does not fit".into(),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn print_row(r: &Row, p: &Params) {
+    let c = &r.cells;
+    println!(
+        "{} on {}-{}: {} LUT4, {} FF, {} carry, {} BRAM, {} DSP; Fmax MHz at {} MHz: {}",
+        r.top.module(),
+        r.device.name,
+        r.device.package,
+        c.lut4,
+        c.ff,
+        c.carry,
+        c.bram,
+        c.dsp,
+        p.clock_hz() / 1e6,
+        fmax_list(r)
+    );
+    for (_, x) in &r.routed {
+        if let Routed::DoesNotFit(why) = x {
+            println!("  {why}");
+        }
+    }
+}
+
+/// The report: parameters, tool versions, one table row per top and device, and the
+/// critical path of the slowest seed.
+fn markdown(p: &Params, rows: &[Row]) -> String {
+    let version = |cmd: &str, arg: &str| {
+        std::process::Command::new(cmd)
+            .arg(arg)
+            .output()
+            .map(|o| {
+                let text = String::from_utf8_lossy(&o.stdout).into_owned()
+                    + &String::from_utf8_lossy(&o.stderr);
+                text.lines().next().unwrap_or("").trim().to_string()
+            })
+            .unwrap_or_default()
+    };
+    let mhz = p.clock_hz() / 1e6;
+    let mut m = String::new();
+    let _ = writeln!(
+        m,
+        "Written by `encspeed synth` for {} lines, {}-bit counters, dt {} cycles, clock {mhz} MHz.\n\
+         Tools: {}; {}.\n\n\
+         Cells: yosys `synth_ice40` of the top alone (`-dsp` on the UP5K). Logic cells and Fmax:\n\
+         nextpnr-ice40 of the top inside the boundary wrapper (every port registered),\n\
+         clock constrained to {mhz} MHz, one run per placement seed.\n",
+        p.lines(),
+        p.counter_bits(),
+        p.dt_cycles(),
+        version("yosys", "-V"),
+        version("nextpnr-ice40", "--version"),
+    );
+    m += "| top | device | SB_LUT4 | flip-flops | SB_CARRY | BRAM | DSP | logic cells | Fmax, MHz | meets clock | critical path (slowest seed) |\n";
+    m += "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for r in rows {
+        let c = &r.cells;
+        let lc = r
+            .routed
+            .iter()
+            .map(|(_, x)| match x {
+                Routed::Done { lc, lc_total, .. } => format!("{lc} / {lc_total}"),
+                Routed::DoesNotFit(over) => format!("does not fit: {over}"),
+            })
+            .next()
+            .unwrap_or_default();
+        let slowest = r
+            .routed
+            .iter()
+            .filter_map(|(_, x)| match x {
+                Routed::Done {
+                    fmax_mhz, from, to, ..
+                } => Some((*fmax_mhz, from, to)),
+                Routed::DoesNotFit(_) => None,
+            })
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map(|(_, from, to)| format!("`{from}` → `{to}`"))
+            .unwrap_or_default();
+        let _ = writeln!(
+            m,
+            "| `{}` | {}-{} | {} | {} | {} | {} | {} | {lc} | {} | {} | {slowest} |",
+            r.top.module(),
+            r.device.name,
+            r.device.package,
+            c.lut4,
+            c.ff,
+            c.carry,
+            c.bram,
+            c.dsp,
+            fmax_list(r),
+            if meets(r, mhz) { "yes" } else { "**no**" },
+        );
+    }
+    m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_report_replaces_only_the_text_between_the_markers() {
+        let doc = format!("# Resources\nintro\n{BEGIN}\nold table\n{END}\nafter\n");
+        assert_eq!(
+            into_markers(&doc, "| new |\n").unwrap(),
+            format!("# Resources\nintro\n{BEGIN}\n| new |\n{END}\nafter\n")
+        );
+        assert_eq!(into_markers("no markers", "x"), None);
+    }
+
+    #[test]
+    fn tops_and_devices_are_named_as_in_the_help() {
+        assert_eq!(tops("all").unwrap(), Top::ALL.to_vec());
+        assert_eq!(
+            tops("wb,encspeed_ecc_wb").unwrap(),
+            vec![Top::Wb, Top::EccWb]
+        );
+        assert!(tops("fast").unwrap_err().contains("encspeed_core"));
+        assert_eq!(devices("up5k").unwrap(), vec![DEVICES[1]]);
+        assert!(devices("ecp5").is_err());
+    }
 }

@@ -10,8 +10,9 @@
 //! - **Strictness.** `iverilog -Wall -g2005` must print nothing at all ([`iverilog`]);
 //!   `verilator --lint-only -Wall` fails on any `%Warning` or `%Error` ([`verilator_lint`]);
 //!   yosys `synth_ice40` runs `check -assert` and fails on any inferred latch
-//!   ([`yosys_synth_ice40`]). nextpnr (the CLI's `synth`) and gcc (the tests of the C
-//!   register headers, with `-Werror`) have no wrapper: they go through [`run`].
+//!   ([`yosys_synth_ice40`]). Place and route (yosys with nextpnr-ice40, and the boundary
+//!   wrapper that makes a wide top placeable) is [`fpga`]. gcc (the tests of the C register
+//!   headers, with `-Werror`) has no wrapper: it goes through [`run`].
 //! - **Lint waivers.** No Verilator rule is switched off on the command line but one:
 //!   [`lint_verilog`], for single rust-hdl blocks, passes `-Wno-DECLFILENAME` (rust-hdl
 //!   names every sub-module by its path, which never matches the file name). Every other
@@ -19,6 +20,8 @@
 //!   reason, as `tb::ecc_verilator::waivers_for` does), scoped to one file (and to one message
 //!   where it can be) and explained next to it; the caller stages that file and lists it
 //!   before the Verilog for [`verilator_lint`] and [`verilator_build`].
+
+pub mod fpga;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -1,0 +1,453 @@
+//! Synthesis and place and route of one top on an iCE40: yosys `synth_ice40` for the cell
+//! counts, nextpnr-ice40 for the placed size and the routed maximum frequency, and the
+//! boundary wrapper that makes a top with more port bits than the package has pins placeable.
+//!
+//! # The boundary wrapper
+//!
+//! `encspeed_core` has about 430 port bits, `encspeed_ecc` more; an iCE40UP5K-SG48 has 39
+//! I/O pins. [`boundary_wrapper`] puts the top between two shift registers: every input bit is
+//! a flip-flop of a chain fed by one pin (`scan_in`), every output bit is captured into a
+//! flip-flop every cycle (or shifted towards `scan_out` when `scan_shift` is high). So every
+//! port is registered, as it is inside a larger design, nothing can be optimised away (every
+//! output reaches a pin through the chain), and the wrapper itself adds one LUT per output
+//! bit and no path longer than a 2:1 multiplexer. The reported Fmax is then the top's own
+//! register-to-register Fmax, including the paths from its input ports; a top placed with
+//! its ports on pins instead would hide those behind nextpnr's unconstrained I/O.
+
+use crate::run;
+use std::path::Path;
+use std::process::Command;
+
+/// One port of a top: (name, is_input, width).
+pub type PortDecl = (String, bool, u32);
+
+/// The ports of module `top` in rust-hdl's emitted Verilog (its "Module arguments"
+/// declarations: `input wire [M:0] name;`, `output reg name;`), in declaration order.
+pub fn module_ports(verilog: &str, top: &str) -> Result<Vec<PortDecl>, String> {
+    let head = format!("module {top}(");
+    let at = verilog
+        .find(&head)
+        .ok_or_else(|| format!("no `module {top}(` in the Verilog"))?;
+    let mut ports = Vec::new();
+    for line in verilog[at..].lines().skip(1) {
+        let l = line.trim();
+        if l.is_empty() || l.starts_with("//") {
+            if ports.is_empty() {
+                continue;
+            }
+            break;
+        }
+        let (is_input, rest) = if let Some(r) = l.strip_prefix("input wire") {
+            (true, r)
+        } else if let Some(r) = l
+            .strip_prefix("output reg")
+            .or(l.strip_prefix("output wire"))
+        {
+            (false, r)
+        } else {
+            break;
+        };
+        let rest = rest.trim().trim_end_matches(';').trim();
+        let (width, name) = match rest.strip_prefix('[') {
+            Some(r) => {
+                let (range, name) = r
+                    .split_once(']')
+                    .ok_or_else(|| format!("bad port declaration `{l}`"))?;
+                let (msb, lsb) = range
+                    .split_once(':')
+                    .ok_or_else(|| format!("bad port range `{l}`"))?;
+                let parse = |s: &str| {
+                    s.trim()
+                        .parse::<u32>()
+                        .map_err(|_| format!("bad port range `{l}`"))
+                };
+                (parse(msb)? - parse(lsb)? + 1, name.trim())
+            }
+            None => (1, rest),
+        };
+        ports.push((name.to_string(), is_input, width));
+    }
+    if ports.is_empty() {
+        return Err(format!("module {top} declares no ports"));
+    }
+    Ok(ports)
+}
+
+/// The Verilog of module `<top>_boundary` (ports `clock`, `scan_in`, `scan_shift`,
+/// `scan_out`) that registers every port of `top` as the module docs describe. `clock` is
+/// the top's port of that name; every other input comes from the input chain.
+pub fn boundary_wrapper(top: &str, ports: &[PortDecl]) -> Result<String, String> {
+    if !ports.iter().any(|(n, i, w)| n == "clock" && *i && *w == 1) {
+        return Err(format!("{top} has no 1-bit input `clock`"));
+    }
+    let ins: u32 = ports
+        .iter()
+        .filter(|(n, i, _)| *i && n != "clock")
+        .map(|p| p.2)
+        .sum();
+    let outs: u32 = ports.iter().filter(|p| !p.1).map(|p| p.2).sum();
+    if ins == 0 || outs == 0 {
+        return Err(format!("{top} needs inputs and outputs besides clock"));
+    }
+    let mut v = format!(
+        "// Boundary wrapper for place and route: every port of {top} registered (see\n\
+         // tools::fpga). Not part of the IP.\n\
+         module {top}_boundary(input wire clock, input wire scan_in, input wire scan_shift,\n\
+         \x20   output wire scan_out);\n\
+         \x20   reg [{im}:0] ins;\n\
+         \x20   wire [{om}:0] outs;\n\
+         \x20   reg [{om}:0] captured;\n",
+        im = ins - 1,
+        om = outs - 1
+    );
+    v += if ins == 1 {
+        "    always @(posedge clock) ins <= scan_in;\n"
+    } else {
+        "    always @(posedge clock) ins <= {ins[INS_MSB-1:0], scan_in};\n"
+    };
+    v = v.replace("INS_MSB", &(ins - 1).to_string());
+    v += &if outs == 1 {
+        "    always @(posedge clock) captured <= scan_shift ? 1'b0 : outs;\n".to_string()
+    } else {
+        format!(
+            "    always @(posedge clock) captured <= scan_shift ? {{captured[{}:0], 1'b0}} : outs;\n",
+            outs - 2
+        )
+    };
+    v += &format!("    assign scan_out = captured[{}];\n", outs - 1);
+    v += &format!("    {top} dut(\n");
+    let (mut i_at, mut o_at) = (0u32, 0u32);
+    let mut conns = Vec::new();
+    for (name, is_input, width) in ports {
+        let bus = if name == "clock" {
+            "clock".to_string()
+        } else {
+            let (vec, at) = if *is_input {
+                ("ins", &mut i_at)
+            } else {
+                ("outs", &mut o_at)
+            };
+            let s = format!("{vec}[{}:{}]", *at + width - 1, *at);
+            *at += width;
+            s
+        };
+        conns.push(format!("        .{name}({bus})"));
+    }
+    v += &conns.join(",\n");
+    v += "\n    );\nendmodule\n";
+    Ok(v)
+}
+
+/// Cell counts of yosys `synth_ice40`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Cells {
+    /// SB_LUT4.
+    pub lut4: u64,
+    /// Flip-flops (every SB_DFF* cell).
+    pub ff: u64,
+    /// SB_CARRY.
+    pub carry: u64,
+    /// SB_RAM40_4K.
+    pub bram: u64,
+    /// SB_MAC16.
+    pub dsp: u64,
+}
+
+/// The cell counts in a yosys `stat` report (the last one, of the whole design).
+pub fn parse_stat(stat: &str) -> Cells {
+    let mut c = Cells::default();
+    let tail = stat
+        .rfind("=== design hierarchy ===")
+        .map_or(stat, |at| &stat[at..]);
+    for l in tail.lines() {
+        let mut it = l.split_whitespace();
+        let (Some(cell), Some(n)) = (it.next(), it.next().and_then(|n| n.parse::<u64>().ok()))
+        else {
+            continue;
+        };
+        match cell {
+            "SB_LUT4" => c.lut4 = n,
+            "SB_CARRY" => c.carry = n,
+            "SB_RAM40_4K" => c.bram = n,
+            "SB_MAC16" => c.dsp = n,
+            _ if cell.starts_with("SB_DFF") => c.ff += n,
+            _ => {}
+        }
+    }
+    c
+}
+
+/// yosys `synth_ice40 [-dsp] -top <top>` of `files` in `dir` (relative to it), with
+/// `check -assert`; the cell counts of the flattened design and `<json>` written for
+/// nextpnr.
+pub fn synth_ice40_json(
+    dir: &Path,
+    files: &[&str],
+    top: &str,
+    dsp: bool,
+    json: &str,
+) -> Result<Cells, String> {
+    let stat = dir.join(format!("{json}.stat"));
+    let _ = std::fs::remove_file(&stat);
+    let script = format!(
+        "read_verilog {}; synth_ice40 {}-top {top} -json {json}; check -assert; tee -q -o {} stat",
+        files.join(" "),
+        if dsp { "-dsp " } else { "" },
+        stat.display()
+    );
+    run(
+        Command::new("yosys")
+            .current_dir(dir)
+            .args(["-q", "-p", &script]),
+        "yosys",
+    )?;
+    let text = std::fs::read_to_string(&stat).map_err(|e| format!("{}: {e}", stat.display()))?;
+    Ok(parse_stat(&text))
+}
+
+/// What nextpnr-ice40 reports of one placed and routed design.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Routed {
+    /// Placed and routed.
+    Done {
+        /// Logic cells used.
+        lc: u64,
+        /// Logic cells of the device.
+        lc_total: u64,
+        /// Maximum frequency of `clock`, MHz.
+        fmax_mhz: f64,
+        /// First cell of the critical path (register to register).
+        from: String,
+        /// Last cell of the critical path.
+        to: String,
+    },
+    /// The design needs more cells of some kind than the device has: nextpnr's message.
+    DoesNotFit(String),
+}
+
+/// nextpnr-ice40 `--<device> --package <package>` of `json` in `dir`, clock `clock`
+/// constrained to `mhz`, placement seed `seed`; unconstrained pins, timing failures
+/// reported rather than fatal.
+pub fn nextpnr_ice40(
+    dir: &Path,
+    json: &str,
+    device: &str,
+    package: &str,
+    mhz: f64,
+    seed: u32,
+) -> Result<Routed, String> {
+    let clock = dir.join("clock.py");
+    std::fs::write(&clock, format!("ctx.addClock(\"clock\", {mhz})\n"))
+        .map_err(|e| format!("{}: {e}", clock.display()))?;
+    let out = Command::new("nextpnr-ice40")
+        .current_dir(dir)
+        .arg(format!("--{device}"))
+        .args(["--package", package, "--json", json])
+        .args(["--pcf-allow-unconstrained", "--timing-allow-fail"])
+        .args(["--seed", &seed.to_string(), "--pre-pack", "clock.py"])
+        .output()
+        .map_err(|e| format!("cannot run nextpnr-ice40: {e} (install it: see .ci/run)"))?;
+    let log =
+        String::from_utf8_lossy(&out.stderr).into_owned() + &String::from_utf8_lossy(&out.stdout);
+    if !out.status.success() {
+        if let Some(over) = over_capacity(&log) {
+            return Ok(Routed::DoesNotFit(over));
+        }
+        // The log runs to thousands of lines of timing budgets: its end says what failed.
+        let lines: Vec<&str> = log.lines().collect();
+        let tail = lines[lines.len().saturating_sub(20)..].join("\n");
+        return Err(format!(
+            "nextpnr-ice40 failed ({}); the log ends:\n{tail}",
+            out.status
+        ));
+    }
+    parse_nextpnr(&log)
+}
+
+/// The resources a design uses beyond the device's in a nextpnr log: its utilisation lines
+/// with more used than there are (`ICESTORM_LC:  6402/ 5280   121%`), or the packer's
+/// "… but device only has …" message; None when everything fitted.
+pub fn over_capacity(log: &str) -> Option<String> {
+    let mut over = Vec::new();
+    for l in log.lines() {
+        let l = l.trim().trim_start_matches("Info:").trim();
+        if l.contains("but device only has") {
+            over.push(l.trim_start_matches("ERROR:").trim().to_string());
+            continue;
+        }
+        let Some((kind, rest)) = l.split_once(':') else {
+            continue;
+        };
+        let nums: Vec<u64> = rest
+            .split(|c: char| !c.is_ascii_digit())
+            .filter_map(|s| s.parse().ok())
+            .collect();
+        if rest.contains('%') && nums.len() == 3 && nums[0] > nums[1] {
+            over.push(format!("{kind}: {} of {}", nums[0], nums[1]));
+        }
+    }
+    over.dedup();
+    (!over.is_empty()).then(|| over.join("; "))
+}
+
+/// The utilisation, the routed Fmax of `clock` and the ends of its critical path in a
+/// nextpnr-ice40 log.
+pub fn parse_nextpnr(log: &str) -> Result<Routed, String> {
+    let strip = |l: &str| {
+        let l = l.trim();
+        l.strip_prefix("Info:")
+            .or(l.strip_prefix("Warning:"))
+            .unwrap_or(l)
+            .trim()
+            .to_string()
+    };
+    // "ICESTORM_LC:  1234/ 7680    16%" (the first such line: the utilisation report).
+    let lc_line = log
+        .lines()
+        .map(strip)
+        .find(|l| l.starts_with("ICESTORM_LC:") && l.contains('%'))
+        .ok_or("no ICESTORM_LC utilisation in the nextpnr log")?;
+    let nums: Vec<u64> = lc_line["ICESTORM_LC:".len()..]
+        .split(|c: char| !c.is_ascii_digit())
+        .filter_map(|s| s.parse().ok())
+        .collect();
+    let (lc, lc_total) = match nums.as_slice() {
+        [used, total, ..] => (*used, *total),
+        _ => return Err(format!("bad utilisation line `{lc_line}`")),
+    };
+    // "Max frequency for clock 'clock$SB_IO_IN_$glb_clk': 57.11 MHz (FAIL at 100.00 MHz)",
+    // the last one (after routing).
+    let f_line = log
+        .lines()
+        .rev()
+        .map(strip)
+        .find(|l| l.starts_with("Max frequency for clock"))
+        .ok_or("no `Max frequency for clock` in the nextpnr log")?;
+    let fmax_mhz: f64 = f_line
+        .split("': ")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .and_then(|x| x.parse().ok())
+        .ok_or_else(|| format!("bad frequency line `{f_line}`"))?;
+    // The last register-to-register critical path report: its first Source, last Sink.
+    let lines: Vec<String> = log.lines().map(strip).collect();
+    let start = lines
+        .iter()
+        .rposition(|l| l.starts_with("Critical path report for clock"))
+        .ok_or("no critical path report for the clock in the nextpnr log")?;
+    let section: Vec<&String> = lines[start + 1..]
+        .iter()
+        .take_while(|l| !l.starts_with("Critical path report") && !l.starts_with("Max frequency"))
+        .collect();
+    let cell = |l: &str, key: &str| -> Option<String> {
+        let at = l.find(key)?;
+        let name = l[at + key.len()..].trim();
+        Some(
+            name.rsplit_once('.')
+                .map_or(name, |(c, _pin)| c)
+                .to_string(),
+        )
+    };
+    let from = section
+        .iter()
+        .find_map(|l| cell(l, "Source "))
+        .ok_or("no Source in the critical path report")?;
+    let to = section
+        .iter()
+        .rev()
+        .find_map(|l| cell(l, "Sink "))
+        .ok_or("no Sink in the critical path report")?;
+    Ok(Routed::Done {
+        lc,
+        lc_total,
+        fmax_mhz,
+        from,
+        to,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TOP: &str = "module t(clock,a,b,q,r);\n    \n    // Module arguments\n\
+        \x20   input wire  clock;\n    input wire  a;\n    input wire  [7:0] b;\n\
+        \x20   output reg  [3:0] q;\n    output reg  r;\n    \n    // Stub signals\n\
+        \x20   reg x;\n\
+        always @(posedge clock) begin q <= b[3:0] + b[7:4]; r <= a ^ b[7]; end\nendmodule\n";
+
+    #[test]
+    fn module_ports_reads_rust_hdl_declarations() {
+        let p = module_ports(TOP, "t").unwrap();
+        let want: Vec<PortDecl> = vec![
+            ("clock".into(), true, 1),
+            ("a".into(), true, 1),
+            ("b".into(), true, 8),
+            ("q".into(), false, 4),
+            ("r".into(), false, 1),
+        ];
+        assert_eq!(p, want);
+        assert!(module_ports(TOP, "u").is_err());
+    }
+
+    /// The wrapper with its top synthesises, keeps the top's logic (the 4-bit adder's carry
+    /// chain and every register) and places and routes on the smallest iCE40 package.
+    #[test]
+    fn boundary_wrapper_keeps_the_logic_and_routes() {
+        let dir = crate::work_dir("tools-test", "boundary").unwrap();
+        let w = boundary_wrapper("t", &module_ports(TOP, "t").unwrap()).unwrap();
+        crate::stage(&dir, &[("t.v", TOP), ("t_boundary.v", &w)]).unwrap();
+        let cells = synth_ice40_json(
+            &dir,
+            &["t.v", "t_boundary.v"],
+            "t_boundary",
+            false,
+            "t.json",
+        )
+        .unwrap();
+        // 9 input flops + 5 output captures + the top's 5 output registers.
+        assert_eq!(cells.ff, 9 + 5 + 5, "{cells:?}");
+        assert!(cells.lut4 >= 5, "{cells:?}");
+        match nextpnr_ice40(&dir, "t.json", "up5k", "sg48", 50.0, 1).unwrap() {
+            Routed::Done {
+                lc,
+                lc_total,
+                fmax_mhz,
+                from,
+                to,
+            } => {
+                assert_eq!(lc_total, 5280);
+                assert!(lc > 0 && fmax_mhz > 50.0, "{lc} {fmax_mhz}");
+                assert!(!from.is_empty() && !to.is_empty());
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn over_capacity_reads_the_utilisation() {
+        let log = "Info: Device utilisation:\nInfo: \t         ICESTORM_LC:  6402/ 5280   121%\n\
+                   Info: \t        ICESTORM_RAM:     0/   30     0%\n";
+        assert_eq!(over_capacity(log).unwrap(), "ICESTORM_LC: 6402 of 5280");
+        assert_eq!(
+            over_capacity("Info: \t ICESTORM_LC:  640/ 5280   12%\n"),
+            None
+        );
+    }
+
+    #[test]
+    fn parse_stat_sums_the_flip_flops() {
+        let s = "=== design hierarchy ===\n\n   Number of cells: 9\n     SB_CARRY 3\n     \
+                 SB_DFF 2\n     SB_DFFESR 4\n     SB_LUT4 7\n     SB_MAC16 1\n     SB_RAM40_4K 2\n";
+        assert_eq!(
+            parse_stat(s),
+            Cells {
+                lut4: 7,
+                ff: 6,
+                carry: 3,
+                bram: 2,
+                dsp: 1
+            }
+        );
+    }
+}
