@@ -5,7 +5,7 @@
 // Function: encspeed_core (unchanged, every port) with its M/T and n3 speeds corrected for the once-per-revolution ripple of an eccentric disc, from the runtime coefficients ecc_c, ecc_d, and the online identification of that eccentricity between two index pulses (Zhao; docs/eccentricity-hardware.md).
 // Speeds: two's complement, 41 bits, speed_frac_bits = 16: value = raw * 2^-16 omega_lim (one line per dt).
 // Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 128; A/B edge that restarts Table 1 to speed_strobe 134.
-// Correctors: sine table of 1024 entries x 24 bits; mtc_strobe 164 cycles after mt_strobe; n3c_strobe 116 cycles after speed_strobe; a request arriving while busy replaces a pending one (the latest wins).
+// Correctors: sine table of 1024 entries x 24 bits; mtc_strobe 165 edges after the edge that raised mt_strobe; n3c_strobe 117 edges after the edge that raised speed_strobe; a request arriving while busy replaces a pending one (the latest wins).
 // Identification: a pulse on ident_arm (once an index has aligned the position) gathers the next revolution, index to index, of forward line edges; ident_done rises 2 edges after the edge that raised the closing index; sums 72 bits.
 // Ports:
 //   input  clock: core clock; everything happens at its rising edge
@@ -57,7 +57,7 @@
 //   output mtc_strobe: one cycle: speed_mtc has just been written
 //   output speed_n3c[40:0]: Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3
 //   output n3c_strobe: one cycle: speed_n3c has just been written
-//   input  ident_arm: one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and the revolution after it is gathered; ident_done clears when the arm takes effect
+//   input  ident_arm: one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and takes effect there, so the revolution gathered is the one from the second index to the third; ident_done clears when the arm takes effect
 //   output ident_done: the ident_* results are complete: rises 2 edges after the edge that raised the closing index; sticky until the next arm takes effect
 //   output ident_overflow: more than 2^16 lines between the index pulses (contract broken, extra lines dropped)
 //   output ident_count[16:0]: forward lines gathered N (lines per revolution for a clean revolution)

@@ -9,7 +9,9 @@ use std::process::ExitCode;
 
 mod cli;
 
-use cli::{accuracy, bench, bode, docs, ecc_ripple, generate, identify, simulate, synth};
+use cli::{
+    accuracy, bench, bode, check, docs, ecc_ripple, generate, identify, simulate, synth, vectors,
+};
 
 #[derive(Parser)]
 #[command(
@@ -74,6 +76,15 @@ enum Cmd {
     /// its budget; writes the figure (speeds in r/min over the shaft angle) to --svg and the
     /// M/T samples to --csv. See docs/eccentricity-hardware.md.
     EccRipple(ecc_ripple::EccRippleArgs),
+    /// The reference model's expected outputs for a stimulus: runs the bit-true model of
+    /// encspeed_core (or encspeed_ecc) on a stimulus CSV or VCD and writes every output port
+    /// as CSV (a row at every change) or VCD. See docs/reference-model.md.
+    Vectors(vectors::VectorsArgs),
+    /// A verdict on another implementation's VCD: runs the model on the inputs its clock
+    /// edges sample and compares every output it has, bit for bit, from the first reset.
+    /// Exit 0 PASS, 1 mismatches (the first listed), 2 a VCD that cannot be checked. See
+    /// docs/reference-model.md.
+    Check(check::CheckArgs),
 }
 
 fn fail(code: u8, msg: impl std::fmt::Display) -> ExitCode {
@@ -93,6 +104,8 @@ fn main() -> ExitCode {
         Cmd::Accuracy(args) => accuracy::run(&args),
         Cmd::Identify(args) => identify::run(&args),
         Cmd::EccRipple(args) => ecc_ripple::run(args),
+        Cmd::Vectors(args) => vectors::run(&args),
+        Cmd::Check(args) => check::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -14,6 +14,10 @@
 //! by the golden model, the HDL constructors and the generated manifest.
 //!
 //! This crate never depends on rust-hdl.
+//!
+//! [`reference`](mod@reference) makes the model a reference for other implementations: stimuli and
+//! expected outputs as CSV or VCD, and a verdict on another simulator's VCD.
+#![doc = include_str!("../README.md")]
 
 pub mod arith;
 pub mod baselines;
@@ -25,6 +29,7 @@ pub mod freqresp;
 pub mod frontend;
 pub mod ideal;
 pub mod params;
+pub mod reference;
 pub mod smallsignal;
 pub mod splitmix;
 pub mod top;

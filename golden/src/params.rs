@@ -173,6 +173,12 @@ pub fn dt_cycles_for(clock_hz: f64, ts_s: f64) -> Result<u64, ParamError> {
     }
 }
 
+/// Width of every speed output for `counter_bits`-bit counters: N + F + 1 (two's
+/// complement; F = [`SPEED_FRAC_BITS`]).
+pub fn speed_bits_for(counter_bits: u32) -> u32 {
+    counter_bits + SPEED_FRAC_BITS + 1
+}
+
 /// Fewest bits that hold `v`.
 pub fn bits_for(v: u64) -> u32 {
     (u64::BITS - v.leading_zeros()).max(1)
@@ -186,11 +192,26 @@ pub const ECC_MIN_LINES: u32 = 4;
 pub const ECC_MAX_LINES: u32 = 1 << 16;
 
 /// Validated parameters. Construct with [`Params::new`]; fields are private so that no
-/// unvalidated value reaches the model or the hardware.
-#[derive(Clone, Debug, PartialEq)]
+/// unvalidated value reaches the model or the hardware. Serialised as its [`Spec`], and
+/// deserialised through [`Params::new`], so a file cannot carry an invalid value either.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "Spec", into = "Spec")]
 pub struct Params {
     spec: Spec,
     timeout_dt: u64,
+}
+
+impl TryFrom<Spec> for Params {
+    type Error = ParamError;
+    fn try_from(spec: Spec) -> Result<Params, ParamError> {
+        Params::new(spec)
+    }
+}
+
+impl From<Params> for Spec {
+    fn from(p: Params) -> Spec {
+        p.spec
+    }
 }
 
 impl Params {
@@ -303,9 +324,9 @@ impl Params {
     pub fn speed_frac_bits(&self) -> u32 {
         SPEED_FRAC_BITS
     }
-    /// Width of every speed output: N + F + 1 (two's complement).
+    /// Width of every speed output: N + F + 1 (two's complement, [`speed_bits_for`]).
     pub fn speed_bits(&self) -> u32 {
-        self.spec.counter_bits + SPEED_FRAC_BITS + 1
+        speed_bits_for(self.spec.counter_bits)
     }
     /// Width of `cfg_filter` ([`FILTER_BITS`]).
     pub fn filter_bits(&self) -> u32 {
@@ -333,6 +354,42 @@ pub fn omega_lim_rps(clock_hz: f64, lines: u32, dt_cycles: u64) -> f64 {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn params_serialise_as_their_spec_and_deserialise_only_when_valid() {
+        let p = Params::new(Spec::default()).unwrap();
+        let text = toml::to_string(&p).unwrap();
+        assert_eq!(toml::from_str::<Spec>(&text).unwrap(), Spec::default());
+        assert_eq!(toml::from_str::<Params>(&text).unwrap(), p);
+        let bad = text.replace("lines = 1024", "lines = 0");
+        assert_ne!(bad, text);
+        let e = toml::from_str::<Params>(&bad).unwrap_err().to_string();
+        assert!(e.contains(&ParamError::ZeroLines.to_string()), "{e}");
+    }
+
+    #[test]
+    fn a_cycles_inputs_and_outputs_round_trip_through_serde() {
+        use crate::top::core::{CoreInputs, CoreOutputs};
+        let i = CoreInputs {
+            enc_a: true,
+            cfg_dt: 1234,
+            cfg_mode: 2,
+            ..Default::default()
+        };
+        assert_eq!(
+            toml::from_str::<CoreInputs>(&toml::to_string(&i).unwrap()).unwrap(),
+            i
+        );
+        let o = CoreOutputs {
+            speed_n3: -65536,
+            valid: true,
+            ..Default::default()
+        };
+        assert_eq!(
+            toml::from_str::<CoreOutputs>(&toml::to_string(&o).unwrap()).unwrap(),
+            o
+        );
+    }
     use super::*;
 
     fn with(f: impl FnOnce(&mut Spec)) -> Result<Params, ParamError> {

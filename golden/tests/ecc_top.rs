@@ -13,7 +13,10 @@ use golden::eccentric::{Eccentricity, Model};
 use golden::ideal::plant::{ClockSampler, Profile};
 use golden::params::{Params, Spec};
 use golden::top::core::CoreInputs;
-use golden::top::ecc_top::{check_revolution, ArmedModel, EccTopInputs, IDENT_DONE_AFTER_INDEX};
+use golden::top::ecc_top::{
+    check_revolution, mtc_after_mt_strobe, n3c_after_speed_strobe, ArmedModel, EccTopInputs,
+    IDENT_DONE_AFTER_INDEX,
+};
 use std::f64::consts::TAU;
 
 const K: u32 = 1024;
@@ -53,6 +56,9 @@ fn corrected_mt_on_the_rigid_disc() {
         let mut aligned = false;
         let mut ident = GatherOutputs::default();
         let (mut last_index, mut done_at) = (0, None);
+        // The edges that raised the last mt_strobe and speed_strobe, and how many corrected
+        // strobes came the documented number of edges after them.
+        let (mut last_mt, mut last_speed, mut mtc_timed, mut n3c_timed) = (0, 0, 0, 0);
         for (k, s) in sampler.enumerate() {
             let (_, o) = top.step(EccTopInputs {
                 core: CoreInputs {
@@ -69,6 +75,25 @@ fn corrected_mt_on_the_rigid_disc() {
                 // until the index that aligns the position.
                 ident_arm: k == 3,
             });
+            let k64 = k as u64;
+            if o.mtc_strobe {
+                assert_eq!(k64 - last_mt, mtc_after_mt_strobe(&p), "mtc_strobe at {k}");
+                mtc_timed += 1;
+            }
+            if o.n3c_strobe {
+                assert_eq!(
+                    k64 - last_speed,
+                    n3c_after_speed_strobe(&p),
+                    "n3c_strobe at {k}"
+                );
+                n3c_timed += 1;
+            }
+            if o.core.mt_strobe {
+                last_mt = k64;
+            }
+            if o.core.speed_strobe {
+                last_speed = k64;
+            }
             if o.ident.done && !ident.done {
                 done_at = Some(k as u64 - last_index);
             }
@@ -137,8 +162,15 @@ fn corrected_mt_on_the_rigid_disc() {
             Ok(()),
             "{rpm} rpm"
         );
-        // The documented latency from the closing index (docs/ports.md).
+        // The documented latencies: from the closing index (docs/ports.md), and of every
+        // corrected strobe from the strobe that raised its job (165 and 117 edges at N = 24,
+        // as the independent bench of the eccentricity hardware measured).
         assert_eq!(done_at, Some(IDENT_DONE_AFTER_INDEX));
+        assert!(mtc_timed > 10 && n3c_timed > 10, "{mtc_timed} {n3c_timed}");
+        assert_eq!(
+            (mtc_after_mt_strobe(&p), n3c_after_speed_strobe(&p)),
+            (165, 117)
+        );
         let got = identify_from_sums(K, ident.sum_t, ident.sum_sin, ident.sum_cos, Model::Rigid);
         let (de, dth) = error_budget(ident.sum_t as f64, e);
         let err_th =

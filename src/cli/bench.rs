@@ -1,8 +1,15 @@
 //! `encspeed bench`: simulation speed (cycles/s) of the golden model, rust-hdl and
-//! Verilator on the same stimulus.
+//! Verilator on the same stimulus, and the speed of `encspeed check` on a VCD of it.
 
 use clap::Args;
 use golden::params::Params;
+use golden::reference::expected::{run_stimulus, VcdExpected};
+use golden::reference::stimulus::StimulusRow;
+use golden::reference::verdict::{check_exact, CheckOptions};
+use golden::reference::{RefTop, Reference};
+use golden::top::core::CoreInputs;
+use golden::top::port_fields::to_port_bits;
+use golden::top::ports::{core_ports, cycle_inputs};
 use std::time::Instant;
 
 use super::spec::SpecArgs;
@@ -56,5 +63,56 @@ fn bench(p: &Params, cycles: u64) -> Outcome {
         "Verilator -O3 (emitted .v)   {:>12.0} cycles/s ({cycles} cycles)",
         verilator_rate
     );
+    let check_cycles = cycles / 10;
+    let (check_rate, vcd_bytes) =
+        check_rate(p, &inputs[..check_cycles as usize]).map_err(|e| (1, e))?;
+    println!(
+        "check --mode exact (VCD)     {:>12.0} cycles/s ({check_cycles} cycles, {:.0} MB VCD \
+         of the ports)",
+        check_rate,
+        vcd_bytes as f64 / 1e6
+    );
     Ok(())
+}
+
+/// `encspeed check`'s speed: the model's own VCD of `inputs` (every port of the core, as
+/// `encspeed vectors` writes it) under target/bench/, then the verdict on it timed. Cycles/s
+/// and the VCD's size.
+fn check_rate(p: &Params, inputs: &[CoreInputs]) -> Result<(f64, u64), String> {
+    let dir = tools::target_dir().join("bench");
+    std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
+    let path = dir.join("check.vcd");
+    let mut model = Reference::new(p, RefTop::Core)?;
+    let ports = cycle_inputs(&core_ports(p.counter_bits()));
+    {
+        let file = std::fs::File::create(&path).map_err(|e| e.to_string())?;
+        let mut sink = VcdExpected::new(
+            std::io::BufWriter::new(file),
+            "encspeed_core",
+            p.clock_hz(),
+            model.inputs(),
+            model.outputs(),
+        )
+        .map_err(|e| e.to_string())?;
+        let rows = inputs.iter().enumerate().map(|(k, i)| {
+            Ok(StimulusRow {
+                cycle: k as u64,
+                inputs: to_port_bits(i, &ports),
+            })
+        });
+        run_stimulus(&mut model, rows, &mut sink).map_err(|e| format!("{e:?}"))?;
+    }
+    let bytes = std::fs::metadata(&path).map_err(|e| e.to_string())?.len();
+    let mut model = Reference::new(p, RefTop::Core)?;
+    let t = Instant::now();
+    let file = std::fs::File::open(&path).map_err(|e| e.to_string())?;
+    let v = check_exact(file, &mut model, &CheckOptions::default()).map_err(|e| e.0)?;
+    let rate = v.cycles as f64 / t.elapsed().as_secs_f64();
+    if v.mismatches != 0 {
+        return Err(format!(
+            "check found {} mismatches in the model's own VCD",
+            v.mismatches
+        ));
+    }
+    Ok((rate, bytes))
 }

@@ -4,6 +4,7 @@
 pub mod accuracy;
 pub mod bench;
 pub mod bode;
+pub mod check;
 pub mod docs;
 pub mod ecc_ripple;
 pub mod generate;
@@ -11,6 +12,7 @@ pub mod identify;
 pub mod simulate;
 pub mod spec;
 pub mod synth;
+pub mod vectors;
 
 /// What a command returns: on failure the exit code and the message.
 pub type Outcome = Result<(), (u8, String)>;

@@ -1,20 +1,22 @@
-//! The emitted `encspeed_ecc.v` (core + corrected M/T), compiled by Verilator with
-//! `tb/verilator/ecc_harness.cpp`, in the pattern of [`crate::verilator`]: per-cycle
-//! streaming for cycle-by-cycle comparison with [`golden::top::ecc_top::EccTopModel`], and an
-//! event mode for revolutions of hundreds of millions of cycles. A missing `verilator` is
-//! an error, never a skip: `.ci/run` installs it.
+//! The emitted `encspeed_ecc.v` (the core with the corrected speeds and the eccentricity
+//! identification) in Verilator, with the harness [`crate::verilator`] generates from its
+//! port list: per-cycle streaming ([`crate::verilator::Simulator::run`]) for cycle-by-cycle
+//! comparison with [`golden::top::ecc_top::EccTopModel`], and the event mode of
+//! `tb/verilator/ecc_events.cpp` ([`EccVerilated::run_events`]) for revolutions of hundreds
+//! of millions of cycles. A missing `verilator` is an error, never a skip: `.ci/run`
+//! installs it.
 
-use crate::stream_harness;
-use crate::verilator::{input_line, outputs_of_fields, signed};
+use crate::verilator::{converse, counter_bits_of, Simulator};
 use golden::ecc::ident_gatherer::GatherOutputs;
 use golden::ideal::plant::Sample;
-use golden::top::ecc_top::{EccTopInputs, EccTopOutputs, IDENT_SUM_BITS};
-use std::io::{BufRead, BufReader, Write};
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use golden::params::speed_bits_for;
+use golden::top::core::CoreInputs;
+use golden::top::ecc_top::{EccTopInputs, EccTopOutputs};
+use golden::top::ports::ecc_ports;
+use hdl::sim::ecc_sim::ECC_TOP_MODULE as MODULE;
 
-const HARNESS: &str = include_str!("../verilator/ecc_harness.cpp");
-const MODULE: &str = "encspeed_ecc";
+/// The event mode (`--events`).
+const EVENTS: &str = include_str!("../verilator/ecc_events.cpp");
 
 /// The waivers for `encspeed_ecc.v`: the core's, retargeted (the top contains the core
 /// unchanged), the file-name rule for the top's sub-modules, and WIDTH for the masks that
@@ -36,10 +38,7 @@ pub fn waivers_for(module: &str) -> String {
 }
 
 /// A compiled simulator of one emitted `encspeed_ecc`.
-pub struct EccVerilated {
-    exe: PathBuf,
-    speed_bits: u32,
-}
+pub type EccVerilated = Simulator<EccTopInputs, EccTopOutputs>;
 
 /// One line of the event mode: a cycle with a strobe.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -109,83 +108,23 @@ pub struct EventLog {
     pub ident: Vec<(u64, GatherOutputs)>,
 }
 
-/// Fields of the identification in a harness line (IDENT in ecc_harness.cpp).
-const IDENT_FIELDS: usize = 16;
-
-/// The identification results from the harness's IDENT fields.
-fn ident_of_fields(f: &[u64]) -> GatherOutputs {
-    let wide = |w: &[u64]| -> i128 {
-        let raw = u128::from(w[0]) | u128::from(w[1]) << 32 | u128::from(w[2]) << 64;
-        let shift = 128 - IDENT_SUM_BITS;
-        ((raw << shift) as i128) >> shift
-    };
-    GatherOutputs {
-        done: f[0] != 0,
-        overflow: f[1] != 0,
-        count: f[2],
-        t_min: f[3],
-        p_min: f[4],
-        t_max: f[5],
-        p_max: f[6],
-        sum_t: wide(&f[7..10]),
-        sum_sin: wide(&f[10..13]),
-        sum_cos: wide(&f[13..16]),
-    }
-}
-
-fn port32(v: i64) -> u64 {
-    (v as u64) & 0xffff_ffff
-}
-
 impl EccVerilated {
-    /// Compile `verilog` (module `encspeed_ecc`, speeds of `speed_bits` bits) with the
-    /// harness, or reuse the build.
+    /// Compile `verilog` (module `encspeed_ecc`, speeds of `speed_bits` bits: checked against
+    /// its ports) with its harness, or reuse the build.
     pub fn build(verilog: &str, speed_bits: u32) -> Result<EccVerilated, String> {
-        if !verilog.contains(&format!("module {MODULE}(")) {
-            return Err(format!("the Verilog has no module {MODULE}"));
+        let counter_bits = counter_bits_of(verilog, MODULE)?;
+        if speed_bits_for(counter_bits) != speed_bits {
+            return Err(format!(
+                "{speed_bits}-bit speeds asked of a Verilog with {counter_bits}-bit counters"
+            ));
         }
-        let exe = tools::verilator_build(
-            "ecc-",
+        Simulator::compile(
+            verilog,
             MODULE,
-            &[
-                ("ecc_waivers.vlt", &waivers()),
-                ("encspeed_ecc.v", verilog),
-                ("ecc_harness.cpp", HARNESS),
-            ],
-        )?;
-        Ok(EccVerilated { exe, speed_bits })
-    }
-
-    /// Run `inputs`, one edge each; optionally trace to `vcd`.
-    pub fn run(
-        &self,
-        inputs: &[EccTopInputs],
-        vcd: Option<&Path>,
-    ) -> Result<Vec<EccTopOutputs>, String> {
-        let text: String = inputs
-            .iter()
-            .map(|i| {
-                format!(
-                    "{} {} {} {}\n",
-                    input_line(&i.core),
-                    port32(i.ecc_c),
-                    port32(i.ecc_d),
-                    u8::from(i.ident_arm)
-                )
-            })
-            .collect();
-        let rows = stream_harness::stream(&self.exe, text, vcd, 36 + IDENT_FIELDS)?;
-        Ok(rows
-            .iter()
-            .map(|f| EccTopOutputs {
-                core: outputs_of_fields(f, self.speed_bits),
-                speed_mtc: signed(f[32], self.speed_bits),
-                mtc_strobe: f[33] != 0,
-                speed_n3c: signed(f[34], self.speed_bits),
-                n3c_strobe: f[35] != 0,
-                ident: ident_of_fields(&f[36..]),
-            })
-            .collect())
+            &ecc_ports(counter_bits),
+            &waivers(),
+            Some(EVENTS),
+        )
     }
 
     /// Run `run.cycles` cycles of the levels `initial` then `changes` (cycle, levels from
@@ -196,72 +135,51 @@ impl EccVerilated {
         initial: Sample,
         changes: &[(u64, Sample)],
     ) -> Result<EventLog, String> {
-        let mut child = Command::new(&self.exe)
-            .arg("--events")
-            .args([
-                run.cycles.to_string(),
-                run.cfg_dt.to_string(),
-                run.cfg_mode.to_string(),
-                run.cfg_z_mode.to_string(),
-                port32(run.ecc_c).to_string(),
-                port32(run.ecc_d).to_string(),
-                run.arm_delay.map_or(-1, |d| d as i64).to_string(),
-            ])
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| format!("cannot start {}: {e}", self.exe.display()))?;
-        let mut text = String::new();
-        let line = |k: u64, s: &Sample| format!("{k} {} {} {}\n", s.a as u8, s.b as u8, s.z as u8);
-        text.push_str(&line(0, &initial));
+        let config = EccTopInputs {
+            core: CoreInputs {
+                cfg_dt: run.cfg_dt,
+                cfg_mode: run.cfg_mode,
+                cfg_z_mode: run.cfg_z_mode,
+                ..CoreInputs::default()
+            },
+            ecc_c: run.ecc_c,
+            ecc_d: run.ecc_d,
+            ident_arm: false,
+        };
+        let levels =
+            |k: u64, s: &Sample| format!("{k} {} {} {}\n", s.a as u8, s.b as u8, s.z as u8);
+        let mut text = self.input_line(&config) + "\n";
+        text.push_str(&levels(0, &initial));
         for (k, s) in changes {
-            text.push_str(&line(*k, s));
+            text.push_str(&levels(*k, s));
         }
-        let mut stdin = child.stdin.take().expect("piped stdin");
-        let writer = std::thread::spawn(move || stdin.write_all(text.as_bytes()));
-        let stdout = BufReader::new(child.stdout.take().expect("piped stdout"));
-        let mut out = EventLog::default();
-        for l in stdout.lines() {
-            let l = l.map_err(|e| e.to_string())?;
-            let (ident, fields) = match l.strip_prefix("I ") {
+        let args = [
+            "--events".to_string(),
+            run.cycles.to_string(),
+            run.arm_delay.map_or(-1, |d| d as i64).to_string(),
+        ];
+        let mut log = EventLog::default();
+        converse(self.exe(), &args, text, |line| {
+            let (ident, rest) = match line.strip_prefix("I ") {
                 Some(rest) => (true, rest),
-                None => (false, l.as_str()),
+                None => (false, line),
             };
-            let f: Vec<u64> = fields
-                .split_whitespace()
-                .map(|x| {
-                    x.parse()
-                        .map_err(|e| format!("bad harness output {l:?}: {e}"))
-                })
-                .collect::<Result<_, String>>()?;
+            let (cycle, outputs) = rest
+                .split_once(' ')
+                .ok_or_else(|| format!("bad harness output {line:?}"))?;
+            let cycle: u64 = cycle
+                .parse()
+                .map_err(|e| format!("bad harness output {line:?}: {e}"))?;
+            let o = self.outputs_of(outputs)?;
             if ident {
-                if f.len() != 1 + IDENT_FIELDS {
-                    return Err(format!("bad harness output {l:?}"));
-                }
-                out.ident.push((f[0], ident_of_fields(&f[1..])));
-                continue;
+                log.ident.push((cycle, o.ident));
+            } else {
+                let strobe = EccStrobe::of(cycle, &o)
+                    .ok_or_else(|| format!("a line without a strobe: {line:?}"))?;
+                log.strobes.push(strobe);
             }
-            if f.len() != 12 {
-                return Err(format!("bad harness output {l:?}"));
-            }
-            out.strobes.push(EccStrobe {
-                cycle: f[0],
-                speed_mt: (f[1] != 0).then(|| signed(f[2], self.speed_bits)),
-                speed_mtc: (f[3] != 0).then(|| signed(f[4], self.speed_bits)),
-                speed_n3: (f[5] != 0).then(|| signed(f[6], self.speed_bits)),
-                speed_n3c: (f[7] != 0).then(|| signed(f[8], self.speed_bits)),
-                position: f[9],
-                speed_nep: f[10],
-                speed_ndt: f[11],
-            });
-        }
-        // The harness stops reading after the last cycle: a closed pipe is not an error.
-        let _ = writer.join().expect("writer thread");
-        let status = child.wait().map_err(|e| e.to_string())?;
-        if !status.success() {
-            return Err(format!("harness failed ({status})"));
-        }
-        Ok(out)
+            Ok(())
+        })?;
+        Ok(log)
     }
 }

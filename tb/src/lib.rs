@@ -2,7 +2,10 @@
 //!
 //! Every hardware behaviour is checked three ways on the same per-cycle stimuli
 //! ([`golden::top::core::CoreInputs`]): the bit-true golden model, the rust-hdl simulation
-//! ([`hdl::build_core`]) and the emitted Verilog in Verilator ([`verilator`]).
+//! ([`hdl::build_core`]) and the emitted Verilog in Verilator ([`verilator`]; the shipped
+//! core also in Icarus Verilog, [`icarus`]). The Verilator harnesses and the Icarus bench are
+//! generated from the tops' port lists ([`golden::top::ports`]), and the per-cycle values
+//! cross to them through [`golden::top::port_fields`]: no port is named twice.
 
 pub mod accuracy;
 pub mod adversarial;
@@ -13,7 +16,5 @@ pub mod freqresp;
 pub mod icarus;
 pub mod scenarios;
 pub mod stimulus;
-pub mod stream_harness;
 pub mod verilator;
 pub mod waves;
-pub mod wb_verilator;

@@ -1,131 +1,287 @@
-//! The emitted Verilog, compiled by Verilator with the harness in `tb/verilator/`.
+//! The shipped tops in Verilator, each with a C++ harness generated from its port list.
 //!
-//! [`Verilated::build`] compiles a Verilog text once per content (cached under
-//! `target/verilator/<hash>/`); [`Verilated::run`] streams per-cycle inputs through it and
-//! returns per-cycle outputs in the same form as the golden model. A missing `verilator` is
-//! an error, never a skip: `.ci/run` installs it.
+//! A harness ([`harness`]) is the part generated from the top's ports (golden's
+//! [`golden::top::ports`]: reading one line of inputs, printing one line of outputs, both in
+//! the order of the list) followed by `tb/verilator/stream_main.cpp` (the stream mode and
+//! `--vcd`) and the top's extra mode, if any (`core_bench.cpp`, `ecc_events.cpp`). The Rust
+//! side writes and reads those lines by walking the same list
+//! ([`golden::top::port_fields`]), so a port is named in one place only.
+//!
+//! [`Simulator::run`] streams per-cycle inputs through a compiled top and returns per-cycle
+//! outputs in the golden model's types; [`tools::verilator_build`] compiles each harness
+//! with its Verilog once per content under `target/verilator/<module>-<hash>/`. The tops:
+//! `encspeed_core` ([`Verilated`]), `encspeed_wb` and `encspeed_ecc_wb` ([`VerilatedWb`]),
+//! `encspeed_ecc` ([`crate::ecc_verilator::EccVerilated`]). A missing `verilator` is an
+//! error, never a skip: `.ci/run` installs it.
 
-use crate::stream_harness;
 use golden::top::core::{CoreInputs, CoreOutputs};
+use golden::top::ecc_wb_top::ECC_WB_TOP_MODULE;
+use golden::top::port_fields::{from_port_bits, to_port_bits, PortFields};
+use golden::top::ports::{core_ports, cycle_inputs, cycle_outputs, Port};
+use golden::top::wb_top::{wb_top_ports, WbTopInputs, WbTopOutputs, TOP_MODULE as WB_MODULE};
+use hdl::emit::TOP_MODULE as CORE_MODULE;
+use std::io::{BufRead, BufReader, Write};
+use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Stdio};
 
-const HARNESS: &str = include_str!("../verilator/harness.cpp");
+/// The part of every harness that does not depend on the ports.
+const STREAM_MAIN: &str = include_str!("../verilator/stream_main.cpp");
+/// `encspeed_core`'s bench mode (`--bench`).
+const CORE_BENCH: &str = include_str!("../verilator/core_bench.cpp");
 /// Lint waivers for the emitted Verilog (each one explained in the file).
 pub const WAIVERS: &str = include_str!("../verilator/waivers.vlt");
+/// `encspeed_wb`'s own lint waivers (each one explained in the file).
+pub const WB_WAIVERS: &str = include_str!("../verilator/wb_waivers.vlt");
+/// `encspeed_ecc_wb`'s own lint waivers (each one explained in the file).
+pub const ECC_WB_WAIVERS: &str = include_str!("../verilator/ecc_wb_waivers.vlt");
 
-/// A compiled simulator of one emitted `encspeed_core`.
-pub struct Verilated {
-    exe: PathBuf,
-    speed_bits: u32,
-}
-
-/// The width of the speed ports, read from the header the generator writes into every
-/// emitted file (`output speed_n3[S-1:0]: …`).
-fn speed_bits_of(verilog: &str) -> Result<u32, String> {
-    let tag = "output speed_n3[";
-    let at = verilog
-        .find(tag)
-        .ok_or("the Verilog has no encspeed port header (output speed_n3[..])")?;
-    let rest = &verilog[at + tag.len()..];
-    let msb: u32 = rest
-        .split(':')
-        .next()
-        .and_then(|x| x.parse().ok())
-        .ok_or("bad speed_n3 width in the header")?;
-    Ok(msb + 1)
-}
-
-/// The two's complement value of the low `bits` bits of `raw`.
-pub fn signed(raw: u64, bits: u32) -> i64 {
-    let sh = 64 - bits;
-    ((raw << sh) as i64) >> sh
-}
-
-/// One harness input line (no newline): the core's inputs in the order of harness.cpp.
-pub fn input_line(i: &CoreInputs) -> String {
-    format!(
-        "{} {} {} {} {} {} {} {} {} {}",
-        i.reset as u8,
-        i.enc_a as u8,
-        i.enc_b as u8,
-        i.enc_z as u8,
-        i.cfg_dt,
-        i.cfg_timeout,
-        i.cfg_filter,
-        i.cfg_mode,
-        i.cfg_z_mode,
-        i.clear_faults as u8
-    )
-}
-
-/// The core's outputs from the first 32 fields a harness printed (order of harness.cpp),
-/// speeds sign-extended from `speed_bits`.
-pub fn outputs_of_fields(f: &[u64], speed_bits: u32) -> CoreOutputs {
-    let sp = |raw: u64| signed(raw, speed_bits);
-    CoreOutputs {
-        position: f[0],
-        z_latch: f[1],
-        index: f[2] != 0,
-        direction: f[3] != 0,
-        nep: f[4],
-        ndt: f[5],
-        update: f[6] != 0,
-        speed_n1: sp(f[7]),
-        speed_n2: sp(f[8]),
-        speed_n3: sp(f[9]),
-        speed_strobe: f[10] != 0,
-        speed_pc: sp(f[11]),
-        speed_et: sp(f[12]),
-        speed_mt: sp(f[13]),
-        baseline_strobe: f[14] != 0,
-        valid: f[15] != 0,
-        stalled: f[16] != 0,
-        fault_illegal: f[17] != 0,
-        fault_overspeed: f[18] != 0,
-        fault_revolution: f[19] != 0,
-        cfg_error: f[20] != 0,
-        glitch_count: f[21],
-        illegal_count: f[22],
-        rev_error_count: f[23],
-        speed_position: f[24],
-        speed_nep: f[25],
-        speed_ndt: f[26],
-        mt_strobe: f[27] != 0,
-        mt_m: f[28],
-        mt_t: f[29],
-        mt_negative: f[30] != 0,
-        dt_active: f[31],
+/// Numbers one port's value takes in a harness line: one, or for a port wider than 64 bits
+/// its 32-bit words, least significant first (as Verilator stores it).
+fn numbers_of(port: &Port) -> usize {
+    if port.width > 64 {
+        port.width.div_ceil(32) as usize
+    } else {
+        1
     }
 }
 
-/// `verilator --lint-only -Wall` with the documented waivers; Ok on a clean lint.
-pub fn lint(verilog: &str) -> Result<String, String> {
-    let dir = tools::work_dir(
-        "verilator",
-        &format!("lint-{:016x}", tools::content_hash(&[verilog])),
-    )?;
-    tools::stage(
-        &dir,
-        &[("encspeed_core.v", verilog), ("waivers.vlt", WAIVERS)],
-    )?;
-    tools::verilator_lint(&dir, "encspeed_core", &["waivers.vlt", "encspeed_core.v"])
+/// The C++ expressions of `port`'s numbers in a harness line, on the model `top`.
+fn cpp_numbers(port: &Port) -> Vec<String> {
+    if numbers_of(port) == 1 {
+        vec![format!("top.{}", port.name)]
+    } else {
+        (0..numbers_of(port))
+            .map(|w| format!("top.{}[{w}]", port.name))
+            .collect()
+    }
 }
 
-impl Verilated {
-    /// Compile `verilog` (top module `encspeed_core`) with the harness, or reuse the build.
-    pub fn build(verilog: &str) -> Result<Verilated, String> {
-        let speed_bits = speed_bits_of(verilog)?;
+/// The names of `ports` as comment lines (`//   a b c`) of at most 92 characters.
+pub(crate) fn name_comment(ports: &[Port]) -> String {
+    let mut lines = vec![String::from("//  ")];
+    for p in ports {
+        if lines
+            .last()
+            .is_some_and(|l| l.len() + 1 + p.name.len() > 92)
+        {
+            lines.push(String::from("//  "));
+        }
+        let last = lines.last_mut().expect("one line at least");
+        last.push(' ');
+        last.push_str(p.name);
+    }
+    lines.join("\n") + "\n"
+}
+
+/// The C++ harness of the top `module` with `ports`: the generated port I/O, then the
+/// optional extra `mode` and `stream_main.cpp` (see that file for the contract).
+pub fn harness(module: &str, ports: &[Port], mode: Option<&str>) -> String {
+    let (inputs, outputs) = (cycle_inputs(ports), cycle_outputs(ports));
+    let inputs_in: Vec<String> = inputs.iter().flat_map(cpp_numbers).collect();
+    let outputs_out: Vec<String> = outputs.iter().flat_map(cpp_numbers).collect();
+    let n = inputs_in.len();
+    let mut cpp = format!(
+        "// Verilator harness for {module}, generated by tb::verilator::harness from the top's\n\
+         // port list (golden::top::ports). Do not edit.\n\
+         //\n\
+         // One line of inputs per clock cycle, in decimal:\n\
+         {}\
+         // one line of outputs after each rising edge, in decimal (raw port values; a port wider\n\
+         // than 64 bits as its 32-bit words, least significant first):\n\
+         {}\
+         #include \"V{module}.h\"\n\
+         #include <cstdio>\n\
+         #include <cstdlib>\n\n\
+         typedef V{module} Top;\n\
+         typedef unsigned long long u;\n\n\
+         // Room for a line of inputs: 20 digits and a separator per number.\n\
+         static const int LINE_CHARS = {};\n\n\
+         // Applies one line of inputs; false if it is malformed.\n\
+         static bool read_inputs(Top& top, const char* line) {{\n\
+         \x20   u v[{n}];\n\
+         \x20   for (int k = 0; k < {n}; ++k) {{\n\
+         \x20       char* end;\n\
+         \x20       v[k] = strtoull(line, &end, 10);\n\
+         \x20       if (end == line) return false;\n\
+         \x20       line = end;\n\
+         \x20   }}\n",
+        name_comment(&inputs),
+        name_comment(&outputs),
+        21 * n + 64
+    );
+    for (k, target) in inputs_in.iter().enumerate() {
+        cpp.push_str(&format!("    {target} = v[{k}];\n"));
+    }
+    cpp.push_str(
+        "    return true;\n}\n\n\
+         // Prints one line of outputs.\n\
+         static void print_outputs(Top& top) {\n\
+         \x20   const u v[] = {\n",
+    );
+    for source in &outputs_out {
+        cpp.push_str(&format!("        (u){source},\n"));
+    }
+    cpp.push_str(
+        "    };\n\
+         \x20   for (size_t k = 0; k < sizeof v / sizeof v[0]; ++k)\n\
+         \x20       printf(k ? \" %llu\" : \"%llu\", v[k]);\n\
+         \x20   putchar('\\n');\n\
+         }\n\n",
+    );
+    if let Some(mode) = mode {
+        cpp.push_str(mode);
+        cpp.push('\n');
+    }
+    cpp.push_str(STREAM_MAIN);
+    cpp
+}
+
+/// The numbers of one harness line for the bit patterns `bits` of `ports`.
+fn line_of(bits: &[u128], ports: &[Port]) -> String {
+    let mut numbers = Vec::with_capacity(bits.len());
+    for (b, port) in bits.iter().zip(ports) {
+        if numbers_of(port) == 1 {
+            numbers.push(b.to_string());
+        } else {
+            numbers.extend((0..numbers_of(port)).map(|w| ((b >> (32 * w)) as u32).to_string()));
+        }
+    }
+    numbers.join(" ")
+}
+
+/// The bit patterns of `ports` from the numbers of one harness line.
+fn bits_of(line: &str, ports: &[Port]) -> Result<Vec<u128>, String> {
+    let numbers: Vec<u128> = line
+        .split_whitespace()
+        .map(|x| {
+            x.parse()
+                .map_err(|e| format!("bad harness output {line:?}: {e}"))
+        })
+        .collect::<Result<_, _>>()?;
+    let expected: usize = ports.iter().map(numbers_of).sum();
+    if numbers.len() != expected {
+        return Err(format!(
+            "bad harness output {line:?}: {} numbers, expected {expected}",
+            numbers.len()
+        ));
+    }
+    let mut rest = numbers.as_slice();
+    Ok(ports
+        .iter()
+        .map(|port| {
+            let (value, tail) = rest.split_at(numbers_of(port));
+            rest = tail;
+            value.iter().rev().fold(0, |acc, &w| acc << 32 | w)
+        })
+        .collect())
+}
+
+/// Run the harness `exe` with `args`, writing `input` to its stdin and handing each line it
+/// prints to `line`; an error if it fails. The input is written from another thread: the
+/// harness answers as it reads, and both pipes would fill up if one thread did both. A
+/// harness may stop reading before the end of its input (the event mode does), so an error
+/// of the writer counts only where the harness itself failed.
+pub(crate) fn converse(
+    exe: &Path,
+    args: &[String],
+    input: String,
+    mut line: impl FnMut(&str) -> Result<(), String>,
+) -> Result<(), String> {
+    let mut child = Command::new(exe)
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot start {}: {e}", exe.display()))?;
+    let mut stdin = child.stdin.take().expect("piped stdin");
+    let writer = std::thread::spawn(move || stdin.write_all(input.as_bytes()));
+    let stdout = BufReader::new(child.stdout.take().expect("piped stdout"));
+    for l in stdout.lines() {
+        line(&l.map_err(|e| e.to_string())?)?;
+    }
+    let written = writer.join().expect("writer thread");
+    let out = child.wait_with_output().map_err(|e| e.to_string())?;
+    if !out.status.success() {
+        return Err(format!(
+            "harness failed ({}): {}{}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr),
+            written
+                .err()
+                .map_or(String::new(), |e| format!(" (writing: {e})"))
+        ));
+    }
+    Ok(())
+}
+
+/// The width of the input `name` of the module `module` in `verilog`, from its declaration
+/// (`input wire  [23:0] cfg_dt;`, as rust-hdl writes it).
+fn input_width(verilog: &str, module: &str, name: &str) -> Result<u32, String> {
+    let body = verilog
+        .split_once(&format!("module {module}("))
+        .ok_or_else(|| format!("the Verilog has no module {module}"))?
+        .1;
+    let declaration = body
+        .lines()
+        .map(str::trim)
+        .find(|l| l.starts_with("input") && l.ends_with(&format!(" {name};")))
+        .ok_or_else(|| format!("{module} declares no input {name}"))?;
+    match declaration.split_once('[') {
+        None => Ok(1),
+        Some((_, range)) => range
+            .split(':')
+            .next()
+            .and_then(|msb| msb.parse::<u32>().ok())
+            .map(|msb| msb + 1)
+            .ok_or_else(|| format!("bad declaration {declaration:?}")),
+    }
+}
+
+/// The counter width N of the top `module` of `verilog` (`encspeed_core` or a top that
+/// has its ports): the width of its `cfg_dt`.
+pub fn counter_bits_of(verilog: &str, module: &str) -> Result<u32, String> {
+    input_width(verilog, module, "cfg_dt")
+}
+
+/// A top compiled by Verilator with its generated harness: one clock edge per `I`, the
+/// outputs `O` after it.
+pub struct Simulator<I, O> {
+    exe: PathBuf,
+    inputs: Vec<Port>,
+    outputs: Vec<Port>,
+    cycle: PhantomData<fn(I) -> O>,
+}
+
+impl<I: PortFields + Clone, O: PortFields> Simulator<I, O> {
+    /// Compile `verilog`, whose top module `module` has `ports`, with its harness (and the
+    /// extra `mode`) and the lint `waivers`, or reuse the build.
+    pub fn compile(
+        verilog: &str,
+        module: &str,
+        ports: &[Port],
+        waivers: &str,
+        mode: Option<&str>,
+    ) -> Result<Self, String> {
+        if !verilog.contains(&format!("module {module}(")) {
+            return Err(format!("the Verilog has no module {module}"));
+        }
         let exe = tools::verilator_build(
-            "",
-            "encspeed_core",
+            &format!("{module}-"),
+            module,
             &[
-                ("waivers.vlt", WAIVERS),
-                ("encspeed_core.v", verilog),
-                ("harness.cpp", HARNESS),
+                ("waivers.vlt", waivers),
+                (&format!("{module}.v"), verilog),
+                ("harness.cpp", &harness(module, ports, mode)),
             ],
         )?;
-        Ok(Verilated { exe, speed_bits })
+        Ok(Simulator {
+            exe,
+            inputs: cycle_inputs(ports),
+            outputs: cycle_outputs(ports),
+            cycle: PhantomData,
+        })
     }
 
     /// Path of the compiled harness.
@@ -133,24 +289,75 @@ impl Verilated {
         &self.exe
     }
 
+    /// One line of inputs (no newline).
+    pub fn input_line(&self, inputs: &I) -> String {
+        line_of(&to_port_bits(inputs, &self.inputs), &self.inputs)
+    }
+
+    /// The outputs of one line of the harness.
+    pub fn outputs_of(&self, line: &str) -> Result<O, String> {
+        Ok(from_port_bits(
+            &bits_of(line, &self.outputs)?,
+            &self.outputs,
+        ))
+    }
+
     /// Run `inputs` through the compiled Verilog, one clock edge per input; optionally write
     /// a VCD of every signal to `vcd`.
-    pub fn run(
-        &self,
-        inputs: &[CoreInputs],
-        vcd: Option<&Path>,
-    ) -> Result<Vec<CoreOutputs>, String> {
-        let text: String = inputs.iter().map(|i| input_line(i) + "\n").collect();
-        let rows = stream_harness::stream(&self.exe, text, vcd, 32)?;
-        let outs = rows
-            .iter()
-            .map(|f| outputs_of_fields(f, self.speed_bits))
-            .collect();
+    pub fn run(&self, inputs: &[I], vcd: Option<&Path>) -> Result<Vec<O>, String> {
+        let text: String = inputs.iter().map(|i| self.input_line(i) + "\n").collect();
+        let args: Vec<String> = vcd
+            .map(|path| vec!["--vcd".into(), path.display().to_string()])
+            .unwrap_or_default();
+        let mut outs = Vec::with_capacity(inputs.len());
+        converse(&self.exe, &args, text, |line| {
+            outs.push(self.outputs_of(line)?);
+            Ok(())
+        })?;
+        if outs.len() != inputs.len() {
+            return Err(format!(
+                "the harness answered {} of {} cycles",
+                outs.len(),
+                inputs.len()
+            ));
+        }
         Ok(outs)
+    }
+}
+
+/// `verilator --lint-only -Wall` on `verilog`, top module `module`, with `waivers`; Ok on a
+/// clean lint (a warning fails the run).
+pub fn lint_top(verilog: &str, module: &str, waivers: &str) -> Result<String, String> {
+    let dir = tools::work_dir(
+        "verilator",
+        &format!(
+            "{module}-lint-{:016x}",
+            tools::content_hash(&[verilog, waivers])
+        ),
+    )?;
+    let v = format!("{module}.v");
+    tools::stage(&dir, &[(&v, verilog), ("waivers.vlt", waivers)])?;
+    tools::verilator_lint(&dir, module, &["waivers.vlt", &v])
+}
+
+/// A compiled simulator of one emitted `encspeed_core`.
+pub type Verilated = Simulator<CoreInputs, CoreOutputs>;
+
+/// `verilator --lint-only -Wall` of `encspeed_core.v` with the documented waivers; Ok on a
+/// clean lint.
+pub fn lint(verilog: &str) -> Result<String, String> {
+    lint_top(verilog, CORE_MODULE, WAIVERS)
+}
+
+impl Verilated {
+    /// Compile `verilog` (top module `encspeed_core`) with its harness, or reuse the build.
+    pub fn build(verilog: &str) -> Result<Verilated, String> {
+        let ports = core_ports(counter_bits_of(verilog, CORE_MODULE)?);
+        Simulator::compile(verilog, CORE_MODULE, &ports, WAIVERS, Some(CORE_BENCH))
     }
 
     /// Benchmark: cycles per second of the compiled Verilog on a square wave of `period`
-    /// cycles with dt = `dt` (see the harness's `--bench`).
+    /// cycles with dt = `dt` (the harness's `--bench`, `core_bench.cpp`).
     pub fn bench(&self, cycles: u64, period: u64, dt: u64) -> Result<f64, String> {
         let out = tools::run(
             Command::new(&self.exe).args([
@@ -165,5 +372,91 @@ impl Verilated {
             .nth(2)
             .and_then(|x| x.parse().ok())
             .ok_or_else(|| format!("bad bench output {out:?}"))
+    }
+}
+
+/// A compiled simulator of one emitted `encspeed_wb`, or of a top with its ports
+/// (`encspeed_ecc_wb`).
+pub type VerilatedWb = Simulator<WbTopInputs, WbTopOutputs>;
+
+/// The waivers that apply to `encspeed_wb.v`: the core's ([`WAIVERS`]), retargeted from
+/// `encspeed_core.v` to this file (the top contains the core unchanged, so the same block
+/// outputs are unused under the same names), then the top's own.
+pub fn wb_waivers() -> String {
+    format!(
+        "{}\n// ---- encspeed_wb's own (wb_waivers.vlt) ----\n{}",
+        WAIVERS.replace("*encspeed_core.v", "*encspeed_wb.v"),
+        WB_WAIVERS.trim_start_matches("`verilator_config")
+    )
+}
+
+/// The waivers of `encspeed_ecc_wb.v`: `encspeed_ecc`'s
+/// ([`crate::ecc_verilator::waivers_for`]) and the top's own (`ecc_wb_waivers.vlt`).
+pub fn ecc_wb_waivers() -> String {
+    format!(
+        "{}\n// ---- encspeed_ecc_wb's own (ecc_wb_waivers.vlt) ----\n{}",
+        crate::ecc_verilator::waivers_for(ECC_WB_TOP_MODULE),
+        ECC_WB_WAIVERS.trim_start_matches("`verilator_config")
+    )
+}
+
+/// `verilator --lint-only -Wall` on `encspeed_wb.v` with the documented waivers; Ok on a
+/// clean lint (a warning fails the run).
+pub fn lint_wb(verilog: &str) -> Result<String, String> {
+    lint_top(verilog, WB_MODULE, &wb_waivers())
+}
+
+impl VerilatedWb {
+    /// Compile `verilog` (top module `encspeed_wb`) with its harness, or reuse the build.
+    pub fn build(verilog: &str) -> Result<VerilatedWb, String> {
+        VerilatedWb::build_top(verilog, WB_MODULE, &wb_waivers())
+    }
+
+    /// Compile `verilog` whose top module `module` has the ports of `encspeed_wb` (as
+    /// `encspeed_ecc_wb` has) with its harness and the lint `waivers`, or reuse the build.
+    pub fn build_top(verilog: &str, module: &str, waivers: &str) -> Result<VerilatedWb, String> {
+        Simulator::compile(verilog, module, &wb_top_ports(), waivers, None)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use golden::top::ports::ecc_ports;
+
+    #[test]
+    fn a_line_holds_a_wide_port_as_its_32_bit_words() {
+        let ports = cycle_outputs(&ecc_ports(24));
+        let mut bits: Vec<u128> = (0..ports.len() as u128).collect();
+        let sum = ports.iter().position(|p| p.width == 72).unwrap();
+        bits[sum] = (5 << 64) | (6 << 32) | 7;
+        let line = line_of(&bits, &ports);
+        assert!(
+            line.contains(&format!(" {} 7 6 5 {} 0 0 ", sum - 1, sum + 1)),
+            "{line}"
+        );
+        assert_eq!(bits_of(&line, &ports), Ok(bits));
+        assert!(bits_of("1 2", &ports).unwrap_err().contains("expected"));
+    }
+
+    #[test]
+    fn the_harness_reads_and_prints_every_port_in_list_order() {
+        let cpp = harness("encspeed_wb", &wb_top_ports(), None);
+        assert!(cpp.contains("top.wb_sel_i = v[9];"), "{cpp}");
+        assert!(
+            cpp.contains("(u)top.wb_dat_o,\n        (u)top.wb_ack_o,\n        (u)top.irq,"),
+            "{cpp}"
+        );
+        assert!(
+            !cpp.contains("top.clock = v["),
+            "the clock is the harness's own"
+        );
+    }
+
+    #[test]
+    fn the_counter_width_comes_from_the_top_modules_declaration() {
+        let v = hdl::emit_core(&golden::params::Params::new(Default::default()).unwrap());
+        assert_eq!(counter_bits_of(&v.verilog, CORE_MODULE), Ok(24));
+        assert!(counter_bits_of("module x();", CORE_MODULE).is_err());
     }
 }

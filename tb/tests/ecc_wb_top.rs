@@ -32,7 +32,7 @@ use proptest::prelude::*;
 use std::f64::consts::TAU;
 use tb::ecc_ripple::{Identification, RippleSetup, Stimulus};
 use tb::ecc_verilator::EventLog;
-use tb::wb_verilator::{ecc_wb_waivers, lint_top, VerilatedWb};
+use tb::verilator::{ecc_wb_waivers, lint_top, VerilatedWb};
 
 /// The firmware's bench: encoder levels from a stimulus, the bus from the firmware, the
 /// cycle model, and every cycle recorded.

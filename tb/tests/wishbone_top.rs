@@ -25,7 +25,7 @@ use std::cell::RefCell;
 use std::path::PathBuf;
 use std::process::Command;
 use std::sync::Mutex;
-use tb::wb_verilator::VerilatedWb;
+use tb::verilator::VerilatedWb;
 
 /// Small parameters: 12-bit counters, dt = 200 cycles, 100 lines, timeout 20 dt.
 fn small() -> Params {
@@ -898,7 +898,7 @@ fn emitted_files_are_deterministic_and_carry_the_header() {
 #[test]
 fn emitted_verilog_lints_clean_with_the_documented_waivers() {
     for p in [default_params(), small()] {
-        tb::wb_verilator::lint(&hdl::emit::wb::emit_wb(&p)[0].1).unwrap();
+        tb::verilator::lint_wb(&hdl::emit::wb::emit_wb(&p)[0].1).unwrap();
     }
 }
 

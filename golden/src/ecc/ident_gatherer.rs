@@ -81,7 +81,7 @@ pub struct GatherInputs {
 }
 
 /// Registered outputs after an edge.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct GatherOutputs {
     /// Results complete (sticky until `arm`).
     pub done: bool,

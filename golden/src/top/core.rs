@@ -71,108 +71,114 @@ use crate::frontend::{
 use crate::params::{
     max_value, Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
 };
+use crate::top::port_fields::port_struct;
+use serde::{Deserialize, Serialize};
 
 /// Edges after reset before the synchronisers hold real samples.
 pub const SYNC_CYCLES: u64 = 2;
 
-/// Inputs of `encspeed_core` during one clock cycle (sampled at its rising edge).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct CoreInputs {
-    /// Synchronous active-high reset.
-    pub reset: bool,
-    /// Encoder channel A (asynchronous).
-    pub enc_a: bool,
-    /// Encoder channel B (asynchronous).
-    pub enc_b: bool,
-    /// Encoder index Z (asynchronous).
-    pub enc_z: bool,
-    /// dt in clock cycles (0: the generation default; 1: used as 2, `cfg_error`).
-    pub cfg_dt: u64,
-    /// Zero-speed timeout in dt intervals (0: the generation default).
-    pub cfg_timeout: u64,
-    /// Glitch filter length in clock cycles (0: off).
-    pub cfg_filter: u64,
-    /// Decoding: 0 = x1, 1 = x2, 2 = x4 (3: x4 and `cfg_error`).
-    pub cfg_mode: u8,
-    /// Index: 0 = ignore, 1 = reset the position, 2 = latch it, 3 = latch then reset.
-    pub cfg_z_mode: u8,
-    /// Clear the sticky fault flags.
-    pub clear_faults: bool,
+port_struct! {
+    /// Inputs of `encspeed_core` during one clock cycle (sampled at its rising edge).
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+    pub struct CoreInputs {
+        /// Synchronous active-high reset.
+        pub reset: bool,
+        /// Encoder channel A (asynchronous).
+        pub enc_a: bool,
+        /// Encoder channel B (asynchronous).
+        pub enc_b: bool,
+        /// Encoder index Z (asynchronous).
+        pub enc_z: bool,
+        /// dt in clock cycles (0: the generation default; 1: used as 2, `cfg_error`).
+        pub cfg_dt: u64,
+        /// Zero-speed timeout in dt intervals (0: the generation default).
+        pub cfg_timeout: u64,
+        /// Glitch filter length in clock cycles (0: off).
+        pub cfg_filter: u64,
+        /// Decoding: 0 = x1, 1 = x2, 2 = x4 (3: x4 and `cfg_error`).
+        pub cfg_mode: u8,
+        /// Index: 0 = ignore, 1 = reset the position, 2 = latch it, 3 = latch then reset.
+        pub cfg_z_mode: u8,
+        /// Clear the sticky fault flags.
+        pub clear_faults: bool,
+    }
 }
 
-/// Outputs of `encspeed_core` after a rising clock edge. Speeds are values in units of
-/// 2^−F ω_lim (F = [`SPEED_FRAC_BITS`]); the ports carry them as two's complement.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct CoreOutputs {
-    /// Position in steps, 0 .. lines·2^s.
-    pub position: u64,
-    /// Position latched at the last index edge.
-    pub z_latch: u64,
-    /// One cycle: an index edge was processed.
-    pub index: bool,
-    /// Direction of the last step (true = forward).
-    pub direction: bool,
-    /// Nep1 of Table 1 (decoder steps).
-    pub nep: u64,
-    /// Ndt1 of Table 1.
-    pub ndt: u64,
-    /// One cycle: Table 1 wrote Nep1 or Ndt1.
-    pub update: bool,
-    /// n1 = Nep/Ndt, ω_lim.
-    pub speed_n1: i64,
-    /// n2, eq. (6), ω_lim.
-    pub speed_n2: i64,
-    /// n3, eq. (11), ω_lim: the estimate to use.
-    pub speed_n3: i64,
-    /// One cycle: `speed_n1..3` were just written.
-    pub speed_strobe: bool,
-    /// Fixed-time (PC) speed of the last window, ω_lim.
-    pub speed_pc: i64,
-    /// Fixed-space (ET) speed at the last window end, ω_lim.
-    pub speed_et: i64,
-    /// M/T speed of the last window, ω_lim.
-    pub speed_mt: i64,
-    /// One cycle: `speed_pc`, `speed_et`, `speed_mt` were just written.
-    pub baseline_strobe: bool,
-    /// `speed_n3` holds a measurement of the current direction, not stalled, legal
-    /// configuration.
-    pub valid: bool,
-    /// No step for the zero-speed timeout.
-    pub stalled: bool,
-    /// Sticky: an illegal transition.
-    pub fault_illegal: bool,
-    /// Sticky: the A or B filter rejected a pulse.
-    pub fault_overspeed: bool,
-    /// Sticky: a revolution had the wrong count.
-    pub fault_revolution: bool,
-    /// `cfg_dt` = 1 or `cfg_mode` = 3 at the last edge.
-    pub cfg_error: bool,
-    /// Pulses rejected by the A, B and Z filters (saturating).
-    pub glitch_count: u64,
-    /// Illegal transitions (saturating).
-    pub illegal_count: u64,
-    /// Revolutions with the wrong count (saturating).
-    pub rev_error_count: u64,
-    /// With `speed_strobe` (held until the next): the end of the span of disc the speeds
-    /// measure, as a position: for Nep1 = 1 the restart pulse that wrote Ndt1, for
-    /// Nep1 ≥ 2 the last pulse of the window that wrote Nep1 (which started Nep1 − 1 steps
-    /// before it). The eccentricity correction of n3 needs it (`golden::top::ecc_top`).
-    pub speed_position: u64,
-    /// With `speed_strobe`: the Nep1 the speeds were computed from.
-    pub speed_nep: u64,
-    /// With `speed_strobe`: the Ndt1 the speeds were computed from.
-    pub speed_ndt: u64,
-    /// One cycle: the M/T counter closed a window (`mt_m`, `mt_t`, `mt_negative` just
-    /// written; `position` in this cycle is the position of the window's last step).
-    pub mt_strobe: bool,
-    /// M/T steps of the last window.
-    pub mt_m: u64,
-    /// M/T cycles spanning them (`golden::baselines::mt_counter`).
-    pub mt_t: u64,
-    /// The last window's steps were backward.
-    pub mt_negative: bool,
-    /// The dt in use, clock cycles (cfg_dt after its default and minimum, registered).
-    pub dt_active: u64,
+port_struct! {
+    /// Outputs of `encspeed_core` after a rising clock edge. Speeds are values in units of
+    /// 2^−F ω_lim (F = [`SPEED_FRAC_BITS`]); the ports carry them as two's complement.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+    pub struct CoreOutputs {
+        /// Position in steps, 0 .. lines·2^s.
+        pub position: u64,
+        /// Position latched at the last index edge.
+        pub z_latch: u64,
+        /// One cycle: an index edge was processed.
+        pub index: bool,
+        /// Direction of the last step (true = forward).
+        pub direction: bool,
+        /// Nep1 of Table 1 (decoder steps).
+        pub nep: u64,
+        /// Ndt1 of Table 1.
+        pub ndt: u64,
+        /// One cycle: Table 1 wrote Nep1 or Ndt1.
+        pub update: bool,
+        /// n1 = Nep/Ndt, ω_lim.
+        pub speed_n1: i64,
+        /// n2, eq. (6), ω_lim.
+        pub speed_n2: i64,
+        /// n3, eq. (11), ω_lim: the estimate to use.
+        pub speed_n3: i64,
+        /// One cycle: `speed_n1..3` were just written.
+        pub speed_strobe: bool,
+        /// Fixed-time (PC) speed of the last window, ω_lim.
+        pub speed_pc: i64,
+        /// Fixed-space (ET) speed at the last window end, ω_lim.
+        pub speed_et: i64,
+        /// M/T speed of the last window, ω_lim.
+        pub speed_mt: i64,
+        /// One cycle: `speed_pc`, `speed_et`, `speed_mt` were just written.
+        pub baseline_strobe: bool,
+        /// `speed_n3` holds a measurement of the current direction, not stalled, legal
+        /// configuration.
+        pub valid: bool,
+        /// No step for the zero-speed timeout.
+        pub stalled: bool,
+        /// Sticky: an illegal transition.
+        pub fault_illegal: bool,
+        /// Sticky: the A or B filter rejected a pulse.
+        pub fault_overspeed: bool,
+        /// Sticky: a revolution had the wrong count.
+        pub fault_revolution: bool,
+        /// `cfg_dt` = 1 or `cfg_mode` = 3 at the last edge.
+        pub cfg_error: bool,
+        /// Pulses rejected by the A, B and Z filters (saturating).
+        pub glitch_count: u64,
+        /// Illegal transitions (saturating).
+        pub illegal_count: u64,
+        /// Revolutions with the wrong count (saturating).
+        pub rev_error_count: u64,
+        /// With `speed_strobe` (held until the next): the end of the span of disc the speeds
+        /// measure, as a position: for Nep1 = 1 the restart pulse that wrote Ndt1, for
+        /// Nep1 ≥ 2 the last pulse of the window that wrote Nep1 (which started Nep1 − 1 steps
+        /// before it). The eccentricity correction of n3 needs it (`golden::top::ecc_top`).
+        pub speed_position: u64,
+        /// With `speed_strobe`: the Nep1 the speeds were computed from.
+        pub speed_nep: u64,
+        /// With `speed_strobe`: the Ndt1 the speeds were computed from.
+        pub speed_ndt: u64,
+        /// One cycle: the M/T counter closed a window (`mt_m`, `mt_t`, `mt_negative` just
+        /// written; `position` in this cycle is the position of the window's last step).
+        pub mt_strobe: bool,
+        /// M/T steps of the last window.
+        pub mt_m: u64,
+        /// M/T cycles spanning them (`golden::baselines::mt_counter`).
+        pub mt_t: u64,
+        /// The last window's steps were backward.
+        pub mt_negative: bool,
+        /// The dt in use, clock cycles (cfg_dt after its default and minimum, registered).
+        pub dt_active: u64,
+    }
 }
 
 /// What the speed calculator's request carries beside Nep1 and Ndt1, delayed as the

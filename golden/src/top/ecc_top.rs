@@ -30,6 +30,8 @@ use crate::ecc::mt_corrector::{MtCorrectorModel, MtJob};
 use crate::ecc::n3_corrector::{N3CorrectorModel, N3Job};
 use crate::params::{Params, SPEED_FRAC_BITS};
 use crate::top::core::{mode_shift, CoreInputs, CoreModel, CoreOutputs};
+use crate::top::port_fields::{visit_fields, PortFields, PortValue};
+use serde::{Deserialize, Serialize};
 
 /// Address and data bits of the corrector's sine table (K entries of 24 bits, addressed
 /// with 16 bits: any K ≤ 2^16).
@@ -48,6 +50,24 @@ pub const TABLE_DATA_BITS: u32 = 24;
 /// one after ([`crate::ecc::ident_gatherer`]).
 pub const IDENT_DONE_AFTER_INDEX: u64 = 2;
 
+/// Edges from the one that raises the core's `mt_strobe` to the one that raises
+/// `mtc_strobe` with that window's corrected speed: the corrector samples the strobe at the
+/// next edge and its latency (from that sampling edge) follows
+/// ([`crate::ecc::mt_corrector::latency_cycles`]).
+pub fn mtc_after_mt_strobe(p: &Params) -> u64 {
+    1 + u64::from(crate::ecc::mt_corrector::latency_cycles(
+        p.counter_bits(),
+        p.speed_frac_bits(),
+    ))
+}
+
+/// Edges from the one that raises the core's `speed_strobe` to the one that raises
+/// `n3c_strobe` with that n3 corrected (sampled at the next edge, as for
+/// [`mtc_after_mt_strobe`]).
+pub fn n3c_after_speed_strobe(p: &Params) -> u64 {
+    1 + u64::from(crate::ecc::n3_corrector::latency_cycles(p.counter_bits()))
+}
+
 /// Width of the identification sums (defined beside the tap's widths it derives from).
 pub use crate::ecc::line_tap::IDENT_SUM_BITS;
 
@@ -60,7 +80,7 @@ pub fn check(p: &Params) -> Result<(), String> {
 }
 
 /// Inputs of `encspeed_ecc` in one cycle.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct EccTopInputs {
     /// The core's inputs.
     pub core: CoreInputs,
@@ -73,7 +93,7 @@ pub struct EccTopInputs {
 }
 
 /// Outputs of `encspeed_ecc` after a rising edge.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct EccTopOutputs {
     /// The core's outputs.
     pub core: CoreOutputs,
@@ -87,6 +107,23 @@ pub struct EccTopOutputs {
     pub n3c_strobe: bool,
     /// The identification gatherer's results (`ident_*` ports).
     pub ident: GatherOutputs,
+}
+
+impl PortFields for EccTopInputs {
+    fn visit_ports(&mut self, visit: &mut dyn FnMut(&'static str, &mut dyn PortValue)) {
+        self.core.visit_ports(visit);
+        visit_fields!(visit, self, "": ecc_c, ecc_d, ident_arm);
+    }
+}
+
+impl PortFields for EccTopOutputs {
+    fn visit_ports(&mut self, visit: &mut dyn FnMut(&'static str, &mut dyn PortValue)) {
+        self.core.visit_ports(visit);
+        visit_fields!(visit, self, "": speed_mtc, mtc_strobe, speed_n3c, n3c_strobe);
+        // The gatherer's results are named without the `ident_` of their ports.
+        visit_fields!(visit, self.ident, "ident_":
+            done, overflow, count, t_min, p_min, t_max, p_max, sum_t, sum_sin, sum_cos);
+    }
 }
 
 /// Cycle model of `encspeed_ecc`.

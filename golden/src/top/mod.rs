@@ -3,5 +3,6 @@
 pub mod core;
 pub mod ecc_top;
 pub mod ecc_wb_top;
+pub mod port_fields;
 pub mod ports;
 pub mod wb_top;

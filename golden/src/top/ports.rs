@@ -1,12 +1,14 @@
-//! The ports of `encspeed_core`, as one description: the emitted Verilog's header, the
-//! manifest and docs/ports.md are all written from [`core_ports`], and the latencies from
-//! [`Latency`].
+//! The ports of the shipped tops, each top's list declared once: the emitted Verilog's
+//! header, the manifest and docs/ports.md are written from [`core_ports`] and [`ecc_ports`]
+//! (and `encspeed_wb`'s from [`crate::top::wb_top::wb_top_ports`]), the benches' harnesses
+//! are generated from them, and the Rust structs of one cycle's values map onto them
+//! ([`crate::top::port_fields`]). The latencies are [`Latency`].
 
 use crate::estimator::speed_calc;
-use crate::params::{Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
+use crate::params::{speed_bits_for, Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
 use serde::Serialize;
 
-/// One port of `encspeed_core`.
+/// One port of a top.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Port {
     /// Verilog name.
@@ -19,25 +21,89 @@ pub struct Port {
     pub description: &'static str,
 }
 
-/// Every port of `encspeed_core` for `p`, in Verilog order of importance (clock first).
-pub fn core_ports(p: &Params) -> Vec<Port> {
-    let n = p.counter_bits();
-    let s = p.speed_bits();
-    let g = ERROR_COUNT_BITS;
-    let port = |name, direction, width, description| Port {
-        name,
-        direction,
-        width,
-        description,
-    };
-    let i = |name, width, d| port(name, "input", width, d);
-    let o = |name, width, d| port(name, "output", width, d);
-    vec![
-        i("clock", 1, "core clock; everything happens at its rising edge"),
-        i("reset", 1, "synchronous, active high; hold it for at least one edge"),
-        i("enc_a", 1, "encoder channel A, asynchronous (two-flop synchronised inside)"),
-        i("enc_b", 1, "encoder channel B, asynchronous; forward = A leads B by 90 degrees"),
+/// Name of every top's clock input: the harnesses drive it, no cycle's values carry it.
+pub const CLOCK: &str = "clock";
+
+impl Port {
+    /// An input port.
+    pub fn input(name: &'static str, width: u32, description: &'static str) -> Port {
+        Port {
+            name,
+            direction: "input",
+            width,
+            description,
+        }
+    }
+
+    /// An output port.
+    pub fn output(name: &'static str, width: u32, description: &'static str) -> Port {
+        Port {
+            name,
+            direction: "output",
+            width,
+            description,
+        }
+    }
+
+    /// The port is an input.
+    pub fn is_input(&self) -> bool {
+        self.direction == "input"
+    }
+}
+
+/// The ports one cycle's inputs carry: every input of `ports` but the [`CLOCK`], in order.
+pub fn cycle_inputs(ports: &[Port]) -> Vec<Port> {
+    ports
+        .iter()
+        .filter(|p| p.is_input() && p.name != CLOCK)
+        .cloned()
+        .collect()
+}
+
+/// The ports one cycle's outputs carry: every output of `ports`, in order.
+pub fn cycle_outputs(ports: &[Port]) -> Vec<Port> {
+    ports.iter().filter(|p| !p.is_input()).cloned().collect()
+}
+
+/// The encoder's inputs, which every top has after its clock and reset.
+pub fn encoder_inputs() -> [Port; 3] {
+    let i = Port::input;
+    [
+        i(
+            "enc_a",
+            1,
+            "encoder channel A, asynchronous (two-flop synchronised inside)",
+        ),
+        i(
+            "enc_b",
+            1,
+            "encoder channel B, asynchronous; forward = A leads B by 90 degrees",
+        ),
         i("enc_z", 1, "encoder index Z, asynchronous"),
+    ]
+}
+
+/// Every port of `encspeed_core` with `counter_bits`-bit counters (the only parameter its
+/// widths depend on), in Verilog order of importance (clock first).
+pub fn core_ports(counter_bits: u32) -> Vec<Port> {
+    let n = counter_bits;
+    let s = speed_bits_for(counter_bits);
+    let g = ERROR_COUNT_BITS;
+    let (i, o) = (Port::input, Port::output);
+    let mut v = vec![
+        i(
+            "clock",
+            1,
+            "core clock; everything happens at its rising edge",
+        ),
+        i(
+            "reset",
+            1,
+            "synchronous, active high; hold it for at least one edge",
+        ),
+    ];
+    v.extend(encoder_inputs());
+    v.extend([
         i("cfg_dt", n, "dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)"),
         i("cfg_timeout", n, "zero-speed timeout in dt intervals; 0 = the generation default; registered"),
         i("cfg_filter", FILTER_BITS, "glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off"),
@@ -76,38 +142,35 @@ pub fn core_ports(p: &Params) -> Vec<Port> {
         o("mt_t", n, "M/T: clock cycles from the step before the window's first to its last (mt_m > 0), else cycles since the last step"),
         o("mt_negative", 1, "M/T: the last window's steps were backward"),
         o("dt_active", n, "the dt in use, clock cycles: cfg_dt after its default and minimum, registered"),
-    ]
+    ]);
+    v
 }
 
-/// Every port of `encspeed_ecc` for `p`: those of `encspeed_core`, then the coefficients,
-/// the corrected speeds and the identification (`crate::top::ecc_top`).
-pub fn ecc_ports(p: &Params) -> Vec<Port> {
-    let s = p.speed_bits();
-    let mut v = core_ports(p);
-    let port = |name, direction, width, description| Port {
-        name,
-        direction,
-        width,
-        description,
-    };
+/// Every port of `encspeed_ecc` with `counter_bits`-bit counters: those of
+/// `encspeed_core`, then the coefficients, the corrected speeds and the identification
+/// (`crate::top::ecc_top`).
+pub fn ecc_ports(counter_bits: u32) -> Vec<Port> {
+    let s = speed_bits_for(counter_bits);
+    let (i, o) = (Port::input, Port::output);
+    let mut v = core_ports(counter_bits);
     v.extend([
-        port("ecc_c", "input", 32, "eccentricity coefficient c = E cos(theta0), two's complement Q15.16 in lines (E = lines * e / 2pi, e = disc centre offset / disc radius); sampled at each mt_strobe and speed_strobe for the correction of that estimate"),
-        port("ecc_d", "input", 32, "eccentricity coefficient d = E sin(theta0), Q15.16 lines"),
-        port("speed_mtc", "output", s, "M/T speed of each window corrected for the eccentricity; format as speed_mt; needs cfg_z_mode = 1 or 3 (position counted from line 0)"),
-        port("mtc_strobe", "output", 1, "one cycle: speed_mtc has just been written"),
-        port("speed_n3c", "output", s, "Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3"),
-        port("n3c_strobe", "output", 1, "one cycle: speed_n3c has just been written"),
-        port("ident_arm", "input", 1, "one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and the revolution after it is gathered; ident_done clears when the arm takes effect"),
-        port("ident_done", "output", 1, "the ident_* results are complete: rises 2 edges after the edge that raised the closing index; sticky until the next arm takes effect"),
-        port("ident_overflow", "output", 1, "more than 2^16 lines between the index pulses (contract broken, extra lines dropped)"),
-        port("ident_count", "output", 17, "forward lines gathered N (lines per revolution for a clean revolution)"),
-        port("ident_t_min", "output", 32, "shortest line period, clock cycles (Zhao's T_min)"),
-        port("ident_p_min", "output", 16, "line number of the edge that closed it (first on ties)"),
-        port("ident_t_max", "output", 32, "longest line period, clock cycles (Zhao's T_max)"),
-        port("ident_p_max", "output", 16, "line number of the edge that closed it (first on ties)"),
-        port("ident_sum_t", "output", 72, "sum of the line periods T, clock cycles (the revolution's length)"),
-        port("ident_sum_sin", "output", 72, "sum of T * round(Q sin(2 pi p / lines)), two's complement, Q = 2^23 - 1, p the line number of the edge closing T"),
-        port("ident_sum_cos", "output", 72, "sum of T * round(Q cos(2 pi p / lines)), two's complement; e and theta0 from the three sums: golden::ecc::ident_gatherer::identify_from_sums (docs/eccentricity-hardware.md)"),
+        i("ecc_c", 32, "eccentricity coefficient c = E cos(theta0), two's complement Q15.16 in lines (E = lines * e / 2pi, e = disc centre offset / disc radius); sampled at each mt_strobe and speed_strobe for the correction of that estimate"),
+        i("ecc_d", 32, "eccentricity coefficient d = E sin(theta0), Q15.16 lines"),
+        o("speed_mtc", s, "M/T speed of each window corrected for the eccentricity; format as speed_mt; needs cfg_z_mode = 1 or 3 (position counted from line 0)"),
+        o("mtc_strobe", 1, "one cycle: speed_mtc has just been written"),
+        o("speed_n3c", s, "Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3"),
+        o("n3c_strobe", 1, "one cycle: speed_n3c has just been written"),
+        i("ident_arm", 1, "one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and takes effect there, so the revolution gathered is the one from the second index to the third; ident_done clears when the arm takes effect"),
+        o("ident_done", 1, "the ident_* results are complete: rises 2 edges after the edge that raised the closing index; sticky until the next arm takes effect"),
+        o("ident_overflow", 1, "more than 2^16 lines between the index pulses (contract broken, extra lines dropped)"),
+        o("ident_count", 17, "forward lines gathered N (lines per revolution for a clean revolution)"),
+        o("ident_t_min", 32, "shortest line period, clock cycles (Zhao's T_min)"),
+        o("ident_p_min", 16, "line number of the edge that closed it (first on ties)"),
+        o("ident_t_max", 32, "longest line period, clock cycles (Zhao's T_max)"),
+        o("ident_p_max", 16, "line number of the edge that closed it (first on ties)"),
+        o("ident_sum_t", 72, "sum of the line periods T, clock cycles (the revolution's length)"),
+        o("ident_sum_sin", 72, "sum of T * round(Q sin(2 pi p / lines)), two's complement, Q = 2^23 - 1, p the line number of the edge closing T"),
+        o("ident_sum_cos", 72, "sum of T * round(Q cos(2 pi p / lines)), two's complement; e and theta0 from the three sums: golden::ecc::ident_gatherer::identify_from_sums (docs/eccentricity-hardware.md)"),
     ]);
     v
 }

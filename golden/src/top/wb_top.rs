@@ -29,7 +29,8 @@ use crate::bus::regmap::{ADDR_BITS, DATA_BITS};
 use crate::bus::wb_regs::{CoreStatus, WbBus, WbRegsInputs, WbRegsModel, WbRegsOutputs};
 use crate::params::Params;
 use crate::top::core::{CoreInputs, CoreModel, CoreOutputs};
-use crate::top::ports::Port;
+use crate::top::port_fields::{port_struct, visit_fields, PortFields, PortValue};
+use crate::top::ports::{encoder_inputs, Port};
 
 /// Name of the top module of the emitted Verilog.
 pub const TOP_MODULE: &str = "encspeed_wb";
@@ -49,15 +50,25 @@ pub struct WbTopInputs {
     pub bus: WbBus,
 }
 
-/// Outputs of `encspeed_wb` after a rising clock edge, named as its ports.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct WbTopOutputs {
-    /// Wishbone acknowledge (one cycle per access).
-    pub wb_ack_o: bool,
-    /// Wishbone read data (0 unless `wb_ack_o` of a read).
-    pub wb_dat_o: u32,
-    /// Interrupt request, level.
-    pub irq: bool,
+impl PortFields for WbTopInputs {
+    fn visit_ports(&mut self, visit: &mut dyn FnMut(&'static str, &mut dyn PortValue)) {
+        visit_fields!(visit, self, "": reset, enc_a, enc_b, enc_z);
+        visit_fields!(visit, self.bus, "":
+            wb_cyc_i, wb_stb_i, wb_we_i, wb_adr_i, wb_dat_i, wb_sel_i);
+    }
+}
+
+port_struct! {
+    /// Outputs of `encspeed_wb` after a rising clock edge, named as its ports.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    pub struct WbTopOutputs {
+        /// Wishbone read data (0 unless `wb_ack_o` of a read).
+        pub wb_dat_o: u32,
+        /// Wishbone acknowledge (one cycle per access).
+        pub wb_ack_o: bool,
+        /// Interrupt request, level.
+        pub irq: bool,
+    }
 }
 
 /// The core's outputs as the register file's status inputs: the same values, the speeds
@@ -175,30 +186,46 @@ impl WbTopModel {
 
 /// Every port of `encspeed_wb`, in the order of the Verilog module header.
 pub fn wb_top_ports() -> Vec<Port> {
-    let port = |name, direction, width, description| Port {
-        name,
-        direction,
-        width,
-        description,
-    };
+    let (i, o) = (Port::input, Port::output);
     let a = ADDR_BITS as u32;
     let d = DATA_BITS as u32;
-    vec![
-        port("clock", "input", 1, "core and bus clock; everything happens at its rising edge"),
-        port("reset", "input", 1, "synchronous, active high: resets the core and every register; hold it for at least one edge"),
-        port("enc_a", "input", 1, "encoder channel A, asynchronous (two-flop synchronised inside)"),
-        port("enc_b", "input", 1, "encoder channel B, asynchronous; forward = A leads B by 90 degrees"),
-        port("enc_z", "input", 1, "encoder index Z, asynchronous"),
-        port("wb_cyc_i", "input", 1, "Wishbone B4 classic: bus cycle"),
-        port("wb_stb_i", "input", 1, "Wishbone: strobe (this slave is addressed)"),
-        port("wb_we_i", "input", 1, "Wishbone: 1 = write, 0 = read"),
-        port("wb_adr_i", "input", a, "Wishbone: byte address within the register window; bits 1:0 ignored"),
-        port("wb_dat_i", "input", d, "Wishbone: write data"),
-        port("wb_sel_i", "input", 4, "Wishbone: byte lanes of a write (lane j = bits 8j+7..8j)"),
-        port("wb_dat_o", "output", d, "Wishbone: read data, valid with wb_ack_o (0 otherwise)"),
-        port("wb_ack_o", "output", 1, "Wishbone: acknowledge, high the one cycle after the request edge"),
-        port("irq", "output", 1, "interrupt request, level: (IRQ_STATUS & IRQ_ENABLE) != 0, a register output"),
-    ]
+    let mut v = vec![
+        i("clock", 1, "core and bus clock; everything happens at its rising edge"),
+        i("reset", 1, "synchronous, active high: resets the core and every register; hold it for at least one edge"),
+    ];
+    v.extend(encoder_inputs());
+    v.extend([
+        i("wb_cyc_i", 1, "Wishbone B4 classic: bus cycle"),
+        i("wb_stb_i", 1, "Wishbone: strobe (this slave is addressed)"),
+        i("wb_we_i", 1, "Wishbone: 1 = write, 0 = read"),
+        i(
+            "wb_adr_i",
+            a,
+            "Wishbone: byte address within the register window; bits 1:0 ignored",
+        ),
+        i("wb_dat_i", d, "Wishbone: write data"),
+        i(
+            "wb_sel_i",
+            4,
+            "Wishbone: byte lanes of a write (lane j = bits 8j+7..8j)",
+        ),
+        o(
+            "wb_dat_o",
+            d,
+            "Wishbone: read data, valid with wb_ack_o (0 otherwise)",
+        ),
+        o(
+            "wb_ack_o",
+            1,
+            "Wishbone: acknowledge, high the one cycle after the request edge",
+        ),
+        o(
+            "irq",
+            1,
+            "interrupt request, level: (IRQ_STATUS & IRQ_ENABLE) != 0, a register output",
+        ),
+    ]);
+    v
 }
 
 #[cfg(test)]

@@ -139,7 +139,7 @@ pub fn emit_core(p: &Params) -> EmitInfo {
         p,
         "quadrature encoder interface: filtered x1/x2/x4 decoding, position, Rairan (2013) synchronised speed n1/n2/n3 and the PC, ET and M/T baselines in hardware, faults.",
         &[],
-        &core_ports(p),
+        &core_ports(p.counter_bits()),
     );
     let manifest = Manifest {
         speed_frac_bits: p.speed_frac_bits(),
@@ -160,7 +160,7 @@ pub fn emit_core(p: &Params) -> EmitInfo {
             omega_lim_rad_s: p.omega_lim_rps() * std::f64::consts::TAU,
             latency: Latency::new(p, 0),
         },
-        ports: core_ports(p),
+        ports: core_ports(p.counter_bits()),
     };
     EmitInfo {
         verilog: format!("{header}\n{body}"),
@@ -173,15 +173,15 @@ pub fn emit_core(p: &Params) -> EmitInfo {
 /// sine table needs a multiple of 4 lines).
 pub fn emit_ecc(p: &Params) -> Result<String, String> {
     let body = crate::sim::ecc_sim::build_ecc(p)?.verilog();
-    let mt = golden::ecc::mt_corrector::latency_cycles(p.counter_bits(), p.speed_frac_bits());
-    let n3 = golden::ecc::n3_corrector::latency_cycles(p.counter_bits());
+    let mt = golden::top::ecc_top::mtc_after_mt_strobe(p);
+    let n3 = golden::top::ecc_top::n3c_after_speed_strobe(p);
     let header = header(
         crate::sim::ecc_sim::ECC_TOP_MODULE,
         p,
         "encspeed_core (unchanged, every port) with its M/T and n3 speeds corrected for the once-per-revolution ripple of an eccentric disc, from the runtime coefficients ecc_c, ecc_d, and the online identification of that eccentricity between two index pulses (Zhao; docs/eccentricity-hardware.md).",
         &[
             format!(
-                "Correctors: sine table of {} entries x {} bits; mtc_strobe {mt} cycles after mt_strobe; n3c_strobe {n3} cycles after speed_strobe; a request arriving while busy replaces a pending one (the latest wins).",
+                "Correctors: sine table of {} entries x {} bits; mtc_strobe {mt} edges after the edge that raised mt_strobe; n3c_strobe {n3} edges after the edge that raised speed_strobe; a request arriving while busy replaces a pending one (the latest wins).",
                 p.lines(),
                 golden::top::ecc_top::TABLE_DATA_BITS
             ),
@@ -191,7 +191,7 @@ pub fn emit_ecc(p: &Params) -> Result<String, String> {
                 golden::top::ecc_top::IDENT_SUM_BITS
             ),
         ],
-        &golden::top::ports::ecc_ports(p),
+        &golden::top::ports::ecc_ports(p.counter_bits()),
     );
     Ok(format!("{header}\n{body}"))
 }
@@ -218,7 +218,7 @@ pub fn ports_markdown(p: &Params) -> String {
         p.omega_lim_rps()
     ));
     md.push_str("| port | dir | width | meaning |\n|---|---|---|---|\n");
-    for port in core_ports(p) {
+    for port in core_ports(p.counter_bits()) {
         md.push_str(&format!(
             "| `{}` | {} | {} | {} |\n",
             port.name, port.direction, port.width, port.description
@@ -241,19 +241,25 @@ pub fn ports_markdown(p: &Params) -> String {
         "\n## `encspeed_ecc`: the core with the eccentricity-corrected speeds\n\n\
          `generated/encspeed_ecc.v` has every port above, unchanged, and these \
          ([eccentricity-hardware.md](eccentricity-hardware.md)). Latencies: `mtc_strobe` \
-         comes {} edges after the `mt_strobe` of its window, `n3c_strobe` {} edges after \
-         the `speed_strobe` of its n3; a request arriving while a corrector is busy \
+         rises {} edges after the edge that raised the `mt_strobe` of its window, \
+         `n3c_strobe` {} edges after the edge that raised the `speed_strobe` of its n3 \
+         (each corrector samples the strobe one edge later; its own latency from there is \
+         one less, [reference-model.md](reference-model.md#rules-latency)); a request arriving while a corrector is busy \
          replaces a pending one (the latest wins). After an `ident_arm` pulse, the \
-         identification gathers the next revolution (index to index) and `ident_done` \
-         rises {} edges after the edge that raised its closing \
+         identification gathers the next revolution (index to index; an arm before the \
+         first index waits for it and gathers from the second index to the third) and \
+         `ident_done` rises {} edges after the edge that raised its closing \
          `index`.\n\n",
-        golden::ecc::mt_corrector::latency_cycles(p.counter_bits(), p.speed_frac_bits()),
-        golden::ecc::n3_corrector::latency_cycles(p.counter_bits()),
+        golden::top::ecc_top::mtc_after_mt_strobe(p),
+        golden::top::ecc_top::n3c_after_speed_strobe(p),
         golden::top::ecc_top::IDENT_DONE_AFTER_INDEX,
     ));
     md.push_str("| port | dir | width | meaning |\n|---|---|---|---|\n");
-    let core = core_ports(p);
-    for port in golden::top::ports::ecc_ports(p).iter().skip(core.len()) {
+    let core = core_ports(p.counter_bits());
+    for port in golden::top::ports::ecc_ports(p.counter_bits())
+        .iter()
+        .skip(core.len())
+    {
         md.push_str(&format!(
             "| `{}` | {} | {} | {} |\n",
             port.name, port.direction, port.width, port.description

@@ -1,0 +1,74 @@
+//! The baseline counters' stimulus (`PcCounter`, `EtTimer`, `MtCounter`): a stream of
+//! encoder steps in segments of 32..512 cycles, each with its own step rate (none at all,
+//! for stalls that saturate the 8-bit counters, up to a step on every cycle), its own
+//! reversal rate and sometimes a new `cfg_dt` (0, 1, 2, small, or up to 2^N − 1, which
+//! saturates the PC count), with random resets.
+
+use super::SplitMix;
+
+/// One cycle of stimulus, shared by the three blocks (`EtTimer` ignores `cfg_dt`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Cycle {
+    /// Synchronous reset.
+    pub reset: bool,
+    /// A decoder step.
+    pub step: bool,
+    /// Its direction.
+    pub forward: bool,
+    /// dt in cycles (N bits).
+    pub cfg_dt: u64,
+}
+
+/// A reproducible stimulus of `len` cycles for N = `bits` from `seed`.
+pub fn stimulus(seed: u64, bits: u32, len: usize) -> Vec<Cycle> {
+    let mut rng = SplitMix(seed);
+    let max = (1u64 << bits) - 1;
+    let mut out = Vec::with_capacity(len);
+    let (mut rate, mut flip, mut dt, mut left, mut forward) = (0u64, 0u64, 5u64, 0u64, true);
+    let reset_first = rng.next().is_multiple_of(2);
+    while out.len() < len {
+        if left == 0 {
+            left = 32 + rng.next() % 480;
+            rate = [0, 5, 50, 300, 700, 1000][(rng.next() % 6) as usize];
+            flip = [0, 20, 500][(rng.next() % 3) as usize];
+            if rng.next().is_multiple_of(3) || out.is_empty() {
+                dt = match rng.next() % 8 {
+                    0 => 0,
+                    1 => 1,
+                    2 => 2,
+                    3 => max,
+                    4 => max - rng.next() % 4,
+                    5 => rng.next() & max,
+                    _ => 2 + rng.next() % 40,
+                } & max;
+            }
+        }
+        left -= 1;
+        let step = rng.next() % 1000 < rate;
+        if step && rng.next() % 1000 < flip {
+            forward = !forward;
+        }
+        out.push(Cycle {
+            reset: (out.is_empty() && reset_first) || rng.next().is_multiple_of(1500),
+            step,
+            forward: if step {
+                forward
+            } else {
+                rng.next().is_multiple_of(2)
+            },
+            cfg_dt: dt,
+        });
+    }
+    out
+}
+
+/// Many stimulus cases back to back (a reset between them).
+pub fn long_stimulus(seed: u64, bits: u32, cases: u64) -> Vec<Cycle> {
+    let mut out = vec![];
+    for i in 0..cases {
+        let mut s = stimulus(seed.wrapping_add(i), bits, 1500);
+        s[0].reset = true;
+        out.extend(s);
+    }
+    out
+}

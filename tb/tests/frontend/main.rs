@@ -1,0 +1,10 @@
+//! Block benches of `hdl/src/frontend`: each block against its bit-true twin in
+//! `golden/src/frontend`, every cycle, in rust-hdl and (its emitted Verilog) in Icarus. One
+//! module per block, named like the block's file.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod glitch_filter;
+mod position_counter;
+mod quadrature_decoder;

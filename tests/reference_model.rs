@@ -1,0 +1,277 @@
+//! `encspeed vectors` and `encspeed check` against an external simulator: the expected
+//! outputs `vectors` writes for a stimulus are those the emitted Verilog gives in Verilator,
+//! cycle for cycle; `check` passes Verilator's VCD of that run (its own naming, timescale
+//! and internal signals), finds a wrong configuration, and refuses unusable VCDs with
+//! exit 2 and a message, never a panic.
+
+use golden::params::{Params, Spec};
+use golden::reference::{RefTop, Reference};
+use golden::top::core::CoreInputs;
+use golden::top::port_fields::to_port_bits;
+use golden::top::ports::{core_ports, cycle_inputs, cycle_outputs};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Small parameters, so that every scenario is a few thousand cycles.
+fn spec() -> Spec {
+    Spec {
+        clock_hz: 1e6,
+        lines: 100,
+        dt_cycles: 200,
+        counter_bits: 16,
+        timeout_s: 12.0 * 200.0 / 1e6,
+    }
+}
+
+/// The command-line options of [`spec`].
+fn spec_args() -> Vec<String> {
+    let s = spec();
+    [
+        ("--clock-hz", s.clock_hz.to_string()),
+        ("--lines", s.lines.to_string()),
+        ("--dt-cycles", s.dt_cycles.to_string()),
+        ("--counter-bits", s.counter_bits.to_string()),
+        ("--timeout-s", s.timeout_s.to_string()),
+    ]
+    .into_iter()
+    .flat_map(|(k, v)| [k.to_string(), v])
+    .collect()
+}
+
+/// `encspeed` with `args`, then the options of [`spec`] that `args` does not give.
+fn encspeed(args: &[&str]) -> Output {
+    let spec = spec_args();
+    let defaults = spec
+        .chunks(2)
+        .filter(|kv| !args.contains(&kv[0].as_str()))
+        .flatten();
+    let o = Command::new(env!("CARGO_BIN_EXE_encspeed"))
+        .args(args)
+        .args(defaults)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run encspeed");
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    o
+}
+
+fn text(o: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    )
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("target/reference-model-test")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Every named scenario one after the other (each starts with its reset), with cfg_dt = 0:
+/// the generation's dt.
+fn stimulus(p: &Params) -> Vec<CoreInputs> {
+    tb::scenarios::all()
+        .iter()
+        .flat_map(|s| s.inputs(p).unwrap())
+        .map(|i| CoreInputs { cfg_dt: 0, ..i })
+        .collect()
+}
+
+/// The stimulus as CSV: a row at cycle 0, wherever an input changes, and at the last cycle
+/// (which ends the run).
+fn stimulus_csv(p: &Params, inputs: &[CoreInputs]) -> String {
+    let model = Reference::new(p, RefTop::Core).unwrap();
+    let ports = cycle_inputs(&core_ports(p.counter_bits()));
+    let names: Vec<&str> = model.inputs().iter().map(|p| p.name).collect();
+    let mut csv = format!("cycle,{}\n", names.join(","));
+    let mut last = None;
+    for (k, i) in inputs.iter().enumerate() {
+        if last != Some(*i) || k + 1 == inputs.len() {
+            let bits = to_port_bits(i, &ports);
+            let values: Vec<String> = model
+                .inputs()
+                .iter()
+                .zip(&bits)
+                .map(|(p, &b)| p.decimal(b))
+                .collect();
+            csv.push_str(&format!("{k},{}\n", values.join(",")));
+            last = Some(*i);
+        }
+    }
+    csv
+}
+
+#[test]
+fn vectors_are_what_verilator_gives_and_check_passes_its_vcd_and_finds_a_wrong_core() {
+    let p = Params::new(spec()).unwrap();
+    let dir = scratch("verilator");
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let inputs = stimulus(&p);
+    std::fs::write(path("stimulus.csv"), stimulus_csv(&p, &inputs)).unwrap();
+
+    // The emitted Verilog in Verilator, with a VCD of every signal.
+    let v = tb::verilator::Verilated::build(&hdl::emit_core(&p).verilog).unwrap();
+    let verilator = v
+        .run(&inputs, Some(Path::new(&path("verilator.vcd"))))
+        .unwrap();
+
+    // vectors: the expected CSV holds Verilator's outputs at every cycle.
+    let o = encspeed(&[
+        "vectors",
+        "--stimulus",
+        &path("stimulus.csv"),
+        "--out",
+        &path("expected.csv"),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    let expected = std::fs::read_to_string(path("expected.csv")).unwrap();
+    let model = Reference::new(&p, RefTop::Core).unwrap();
+    let out_ports = cycle_outputs(&core_ports(p.counter_bits()));
+    let mut rows = expected.lines();
+    let header: Vec<&str> = rows.next().unwrap().split(',').collect();
+    let names: Vec<&str> = model.outputs().iter().map(|p| p.name).collect();
+    assert_eq!(header[0], "cycle");
+    assert_eq!(header[1..], names[..]);
+    let mut rows = rows.peekable();
+    let mut current: Vec<String> = Vec::new();
+    let mut changes = 0;
+    for (k, out) in verilator.iter().enumerate() {
+        if let Some(row) = rows.next_if(|r| r.split(',').next() == Some(&k.to_string())) {
+            current = row.split(',').skip(1).map(str::to_string).collect();
+            changes += 1;
+        }
+        let got: Vec<String> = model
+            .outputs()
+            .iter()
+            .zip(to_port_bits(out, &out_ports))
+            .map(|(p, b)| p.decimal(b))
+            .collect();
+        assert_eq!(
+            got, current,
+            "cycle {k}: Verilator against the expected CSV"
+        );
+    }
+    assert!(rows.next().is_none(), "rows beyond the run");
+    assert!(changes > 1000, "{changes} rows");
+    println!(
+        "{} cycles, {changes} rows: Verilator = vectors",
+        inputs.len()
+    );
+
+    // check: Verilator's VCD (scope TOP, internal signals beside) passes; every edge from
+    // the first reset (edge 0) is compared, on all 32 outputs.
+    let o = encspeed(&["check", "--vcd", &path("verilator.vcd")]);
+    assert!(o.status.success(), "{}", text(&o));
+    let pass = format!(
+        "PASS: {} cycles, {} values compared",
+        inputs.len(),
+        inputs.len() * names.len()
+    );
+    assert!(text(&o).contains(&pass), "{}", text(&o));
+
+    // vectors writes a VCD that check passes, and reads a VCD stimulus to the same CSV.
+    let o = encspeed(&[
+        "vectors",
+        "--stimulus",
+        &path("stimulus.csv"),
+        "--out",
+        &path("expected.vcd"),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    let o = encspeed(&["check", "--vcd", &path("expected.vcd")]);
+    assert!(text(&o).contains(&pass), "{}", text(&o));
+    let o = encspeed(&[
+        "vectors",
+        "--stimulus",
+        &path("verilator.vcd"),
+        "--out",
+        &path("again.csv"),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert_eq!(
+        std::fs::read_to_string(path("again.csv")).unwrap(),
+        expected
+    );
+
+    // A core built for another dt is not this one: exit 1 with the first mismatches.
+    let o = encspeed(&[
+        "check",
+        "--vcd",
+        &path("verilator.vcd"),
+        "--dt-cycles",
+        "150",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    let t = text(&o);
+    assert!(t.contains("FAIL: ") && t.contains("dt_active"), "{t}");
+}
+
+#[test]
+fn unusable_vcds_exit_2_with_a_message() {
+    let p = Params::new(spec()).unwrap();
+    let dir = scratch("unusable");
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let inputs: Vec<CoreInputs> = stimulus(&p).into_iter().take(2000).collect();
+    let v = tb::verilator::Verilated::build(&hdl::emit_core(&p).verilog).unwrap();
+    v.run(&inputs, Some(Path::new(&path("good.vcd")))).unwrap();
+    let good = std::fs::read_to_string(path("good.vcd")).unwrap();
+    let cases: Vec<(&str, String, Vec<&str>, &str)> = vec![
+        (
+            "header.vcd",
+            good[..good.find("$enddefinitions").unwrap() - 40].to_string(),
+            vec![],
+            "header",
+        ),
+        (
+            "junk.vcd",
+            format!("{good}\n#999999\nthis is not vcd\n"),
+            vec![],
+            "not a VCD command",
+        ),
+        (
+            "cut.vcd",
+            format!("{good}\n#999999\nb1010"),
+            vec![],
+            "ends inside a value change",
+        ),
+        ("empty.vcd", String::new(), vec![], "header"),
+        (
+            "good.vcd",
+            good.clone(),
+            vec!["--map", "enc_a_in=enc_a"],
+            "enc_a_in",
+        ),
+        (
+            "good.vcd",
+            good.clone(),
+            vec!["--scope", "tb.dut"],
+            "no scope `tb.dut`",
+        ),
+        (
+            "good.vcd",
+            good.clone(),
+            vec!["--map", "nonsense"],
+            "THEIRS=PORT",
+        ),
+        ("missing.vcd", String::new(), vec![], "No such file"),
+    ];
+    for (name, content, extra, message) in cases {
+        if name != "missing.vcd" {
+            std::fs::write(path(name), &content).unwrap();
+        }
+        let mut args = vec!["check", "--vcd"];
+        let file = path(name);
+        args.push(&file);
+        args.extend(extra.iter().copied());
+        let o = encspeed(&args);
+        let t = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{name} {extra:?}: {t}");
+        assert!(t.contains(message), "{name} {extra:?}: {t}");
+    }
+}
