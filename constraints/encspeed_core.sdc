@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT OR Apache-2.0
 # Timing constraints for encspeed_core (SDC, for vendor tools: Vivado/Quartus/Libero/Radiant).
 # Part: any. Clock: `clock`, 100 MHz (the generator's default clock_hz; edit to match).
 create_clock -name clock -period 10.000 [get_ports clock]

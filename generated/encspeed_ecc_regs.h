@@ -1,3 +1,5 @@
+/* Command: encspeed generate --clock-hz 100000000 --lines 1024 --dt-cycles 100000 --counter-bits 24 --timeout-s 1 */
+/* SPDX-License-Identifier: MIT OR Apache-2.0 */
 /*
  * encspeed_ecc_regs.h: the eccentricity window of encspeed_ecc_wb (offsets from the
  * base of the same register window as encspeed_regs.h, which describes the offsets

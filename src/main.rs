@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed`: generate the encoder speed IP, simulate it with waveforms, benchmark it.
 //!
 //! Exit codes: 0 success, 1 a failed run (tool missing, mismatch), 2 bad parameters or usage.

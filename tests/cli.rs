@@ -1,8 +1,10 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The `encspeed` command line: the README's generate command reproduces `generated/`,
 //! bad parameters are refused with exit code 2 and a message naming them (nothing is
 //! written), and `simulate` writes a VCD under the path given.
 
 use golden::params::Spec;
+use golden::provenance::Comment;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -131,24 +133,35 @@ fn ecc_ripple_prints_the_ripple_and_writes_the_figure() {
     }
 }
 
+/// The first line of encspeed.example.toml: how to regenerate it.
+const EXAMPLE_COMMAND: &str = "encspeed generate --print-config > encspeed.example.toml";
+
 #[test]
-fn the_command_in_the_header_regenerates_the_file() {
-    let v = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("generated/encspeed_core.v"),
-    )
-    .unwrap();
-    let cmd = v
-        .lines()
-        .find_map(|l| l.strip_prefix("// Command: "))
-        .expect("header names the command");
-    let out = scratch("header-command");
-    let mut args: Vec<&str> = cmd.split_whitespace().skip(1).collect();
-    args.extend(["--out", out.to_str().unwrap()]);
-    assert!(encspeed(&args).status.success());
-    assert_eq!(
-        std::fs::read_to_string(out.join("encspeed_core.v")).unwrap(),
-        v
-    );
+fn the_command_in_the_first_line_of_every_generated_file_regenerates_it() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("generated");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    files.sort();
+    assert_eq!(files.len(), 7, "{files:?}");
+    for (k, path) in files.iter().enumerate() {
+        let text = std::fs::read_to_string(path).unwrap();
+        let cmd = golden::provenance::command_of(&text)
+            .unwrap_or_else(|| panic!("{}: no command in the first line", path.display()));
+        let out = scratch(&format!("header-command-{k}"));
+        let mut args: Vec<&str> = cmd.split_whitespace().skip(1).collect();
+        assert_eq!(args.first(), Some(&"generate"), "{}", path.display());
+        args.extend(["--out", out.to_str().unwrap()]);
+        assert!(encspeed(&args).status.success());
+        let name = path.file_name().unwrap();
+        assert_eq!(
+            std::fs::read_to_string(out.join(name)).unwrap(),
+            text,
+            "{}",
+            path.display()
+        );
+    }
 }
 
 #[test]
@@ -489,11 +502,13 @@ fn example_file_is_the_printed_defaults_and_parses_to_them() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("encspeed.example.toml");
     let text = std::fs::read_to_string(&path).unwrap();
     assert_eq!(toml::from_str::<Spec>(&text).unwrap(), Spec::default());
+    // The file is the printed defaults after the two lines every generated file starts with.
     let o = encspeed(&["generate", "--print-config"]);
+    let preamble = golden::provenance::preamble(Comment::Hash, EXAMPLE_COMMAND);
     assert_eq!(
-        String::from_utf8_lossy(&o.stdout),
+        format!("{preamble}{}", String::from_utf8_lossy(&o.stdout)),
         text,
-        "regenerate with `encspeed generate --print-config > encspeed.example.toml`"
+        "regenerate with the command of its first line"
     );
     for key in spec_keys() {
         let i = text.find(&format!("\n{key} = ")).expect(&key);

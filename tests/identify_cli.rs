@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed identify` as a user runs it (the binary, its exit code, its CSV):
 //! - on scenarios of the golden plant, whose truth is the plant parameters passed on the
 //!   command line: the harmonic fit within 1 % of e and 1° of θ0, with and without speed

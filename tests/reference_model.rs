@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed vectors` and `encspeed check` against an external simulator: the expected
 //! outputs `vectors` writes for a stimulus are those the emitted Verilog gives in Verilator,
 //! cycle for cycle; `check` passes Verilator's VCD of that run (its own naming, timescale

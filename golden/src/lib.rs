@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Golden model of encspeed.
 //!
 //! Layer 1 (float ideal, [`ideal`]): [`ideal::plant`] turns shaft motion into exact A/B/Z
@@ -29,6 +30,7 @@ pub mod freqresp;
 pub mod frontend;
 pub mod ideal;
 pub mod params;
+pub mod provenance;
 pub mod reference;
 pub mod smallsignal;
 pub mod splitmix;

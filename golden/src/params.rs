@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The one validated parameter type of encspeed.
 //!
 //! A [`Spec`] is what a user writes (CLI options, a TOML file, a test); [`Params::new`]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! SplitMix64 (Steele, Lea, Flood 2014): a tiny reproducible generator, so that the golden
 //! crate needs no random-number dependency and every test stream has one definition.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The bit-true counters of the three baseline estimators — `golden::baselines::pc_counter` (fixed
 //! time), `golden::baselines::et_timer` (fixed space), `golden::baselines::mt_counter` (M/T):
 //! - hand-worked sequences (expected values by hand, in the comments);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Tests of the baseline-speeds model. Truth comes from outside the model: values worked by
 //! hand, the rounding rule restated here as quotient and remainder (not the model's
 //! formula), f64, and edge counts of the documented schedule worked by hand. The hardware

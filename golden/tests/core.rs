@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Hand-checked behaviour of the bit-true core model (`golden::top::core::CoreModel`): counts in
 //! x1/x2/x4, known speeds of every estimator on exact square waves, reversal, faults,
 //! configuration defaults and latencies. Expected values are worked by hand in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Tests of the divider model. Truth comes from outside the model's recurrence: quotients and
 //! remainders worked by hand, Rust's integer `/` and `%` on u64/u128, and a transaction-level
 //! description of the handshake (start accepted when idle, done exactly W edges later)

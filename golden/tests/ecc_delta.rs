@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `golden::ecc::ecc_delta`: the bit-true correction δ of a span against hand-computed answers,
 //! against f64 sin/cos within its derived error budget (max and RMS), against the f64
 //! correction of `golden::eccentric::correct` (`Correction::count`), the cycle model against

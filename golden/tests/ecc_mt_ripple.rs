@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The corrected M/T speed on an eccentric disc, in the hardware's integer arithmetic:
 //! clock-stamped pulses of the rigid disc (K = 1024, e = 0.35/30, θ0 = 50°, 100 MHz clock,
 //! dt = 1 ms, x1), M/T windows as `golden::baselines::mt_counter` forms them, δ from

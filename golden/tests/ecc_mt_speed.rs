@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Tests of the corrected M/T speed model `golden::ecc::ecc_mt_speed`. Truth from outside the
 //! model: values worked by hand; `golden::baselines::baseline_speeds::speed_mt` (an independent,
 //! already-verified definition) for δ = 0; the rounding rule restated here from quotient and

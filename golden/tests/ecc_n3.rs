@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `golden::ecc::ecc_n3` (the bit-true n3 corrector): hand-worked values, the hardware
 //! algorithm against the rule (exhaustive on small operands, proptest on the full ranges),
 //! the rule against the f64 rule of `golden::eccentric::n3`, and the timing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed_ecc`'s bit-true model on the rigid eccentric disc: the corrected M/T speed of
 //! every window against the plant's constant shaft speed (the position aligned to the disc's
 //! lines by the index, `cfg_z_mode` = 1), and the identification gathered by the same top

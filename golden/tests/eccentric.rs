@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Eccentricity tests (issue 4, golden part). Truth comes from outside the code under
 //! test: closed forms written here (series, quadrature, the sine rule), the numbers of
 //! docs/design-decisions.md#eccentricity (checked independently), and the paper's own

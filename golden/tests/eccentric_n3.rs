@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Rairán's n3 on an eccentric disc (rigid, K = 1024, e = 0.35/30, θ0 = 50°), before and
 //! after the count correction of `golden::eccentric::n3`. The truth is Rairán's own bound,
 //! eq. (13) (`rairan::er3_max`), and the plant's constant shaft speed: n3 is a quantiser

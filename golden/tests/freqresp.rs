@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The VCO experiment in simulation (`golden::freqresp`): the analysis against hand-known
 //! answers, the paper's validation points (Section III, Figs. 8-11) against its models,
 //! the derived models of M/T and n3, and where the small-signal picture breaks; and the

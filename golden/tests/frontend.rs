@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Front-end model tests. Truth comes from outside the code: hand-worked sequences (the
 //! expected outputs are written out by hand below, with the reasoning in comments) and, for
 //! the chain glitch filter → decoder → position counter, the shaft angle of the plant: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Ideal-estimator tests. Known answers are worked out by hand in the comments from
 //! Rairán's Table 1 (order of the four steps as in docs/design-decisions.md#table1-order),
 //! and bounds come from the paper's equations (1), (6), (11) and (13), restated here rather

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `golden::ecc::ident_gatherer`: hand-worked sums on K = 4, the control sequence (arm, index,
 //! done, overflow, reset), and on the rigid eccentric disc (K = 1024, 100 MHz clock,
 //! e = 0.35/30) the gathered results against the golden identification.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Plant tests. Truth comes from hand calculations and closed forms written here, not from
 //! the code under test: edge instants of constant and ramp motion in closed form, the
 //! mirror symmetry of a reversal, a brute-force fine-grid scan of the level functions, and

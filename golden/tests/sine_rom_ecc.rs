@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The sine table (`golden::ecc::sine_rom`): hand-worked values, the table's ½-LSB bound against
 //! f64 sin, the compare-and-subtract index against `%`, and the read latency. The
 //! eccentricity correction built on it is tested in `ecc_delta.rs`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Small-signal model tests (Vázquez-Gutiérrez et al. 2019). The truths are numbers printed
 //! in the paper or worked out by hand in the comments, restated here as literals rather
 //! than computed by the code under test. Where the paper and the hand calculation differ,

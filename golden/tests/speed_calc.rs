@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Tests of the speed calculator model. Truth comes from outside the model: values worked by
 //! hand from eq. (5), (6) and (11), the float estimators of `golden::ideal` (written
 //! independently, in f64), the exact fractions restated here and checked with u128

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! rust-hdl description of the encspeed IP, one hardware block per file, in subsystem
 //! folders that mirror the golden model's (`golden/src`): each block's bit-true model has
 //! the same file name there. docs/architecture.md has the block index (every block's

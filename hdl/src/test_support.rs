@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Helpers for the blocks' unit tests.
 
 /// `verilator --lint-only -Wall` on `verilog` (top module `top`) by [`tools::lint_verilog`]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The Verilog text of a rust-hdl block with its top module named, the one way every block,
 //! top and simulation asks rust-hdl for Verilog. A leaf: it knows no block.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed accuracy`: the constant-speed accuracy sweep of every estimator of the
 //! bit-true core, CSV on stdout, a summary on stderr, the figure as SVG.
 

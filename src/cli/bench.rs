@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed bench`: simulation speed (cycles/s) of the golden model, rust-hdl and
 //! Verilator on the same stimulus, and the speed of `encspeed check` on a VCD of it.
 

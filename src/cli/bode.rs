@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed bode`: measured and model gain and phase of a speed estimator (the paper's VCO
 //! experiment in simulation), CSV on stdout (and --csv), a summary on stderr, an SVG figure.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed check`: a verdict on another implementation's VCD against the bit-true model.
 //! Exit 0 with `PASS`, 1 with the first mismatches, 2 for a VCD that cannot be checked.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed docs`: rewrite the generated pages of docs/ (ports.md, registers.md) for the
 //! default parameters.
 

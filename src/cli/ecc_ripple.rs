@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed ecc-ripple`: the once-per-revolution ripple of M/T and n3 before and after the
 //! eccentricity correction, measured on the emitted encspeed_ecc.v in Verilator.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed generate`: write encspeed_core.v and its manifest encspeed_core.toml,
 //! encspeed_wb.v and encspeed_regs.h, and for a multiple of 4 lines also encspeed_ecc.v,
 //! encspeed_ecc_wb.v and encspeed_ecc_regs.h.

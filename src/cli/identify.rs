@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed identify`: the eccentricity e and its phase θ0 of an encoder disc, from one
 //! revolution of line periods between two Z pulses, taken either from a scenario run through
 //! the golden plant or from a VCD of the A/B/Z signals.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The subcommands of `encspeed`, one module each (its options and what it runs), and
 //! the generation parameters they share (`spec`).
 

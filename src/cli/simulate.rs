@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed simulate`: run a scenario or a custom motion through the rust-hdl design,
 //! check it against the golden model on every cycle and write a VCD of every signal;
 //! optionally the same on the emitted Verilog in Verilator.

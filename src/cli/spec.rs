@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The generation parameters of every command that builds the core (`generate`,
 //! `simulate`, `bench`, `synth`, `ecc-ripple`): `SpecArgs`, its options made from the
 //! fields of `Spec`, the `--config` file, and the TOML of `--print-config`.

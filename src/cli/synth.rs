@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed synth`: the resource and timing report of the shipped tops. For each top of
 //! `hdl::Top::ALL` and each device, yosys `synth_ice40` (with `-dsp` where the device has
 //! DSPs) gives the cells, and nextpnr-ice40 places and routes the top inside

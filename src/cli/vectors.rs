@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed vectors`: the bit-true model on a stimulus (CSV or VCD), every output port of
 //! the top written as CSV or as a VCD. The conventions are in docs/reference-model.md.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 // A user's bench for the shipped encspeed_core.v, written the way an outside engineer would:
 // only the ports and the manifest's speed_frac_bits are used, nothing of this repository.
 //

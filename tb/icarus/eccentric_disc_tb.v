@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 // Eccentric encoder disc at constant speed, for `encspeed identify --vcd`
 // (tests/identify_cli.rs). It writes enc_a, enc_b, enc_z to eccentric_disc.vcd in the
 // working directory; every edge instant is computed here, in Verilog real arithmetic, from

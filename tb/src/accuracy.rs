@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Constant-speed accuracy sweep of the bit-true core: every speed estimator of
 //! `encspeed_core` (PC, ET, n1, n3, M/T) against the true speed, with each one's computed
 //! error bound.

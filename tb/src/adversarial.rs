@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Adversarial per-cycle stimuli for `encspeed_core`: quadrature motion at up to the
 //! maximum edge rate, bursts with reversals, stops past the timeout, glitches on A/B/Z
 //! shorter and longer than the filter, illegal transitions, index pulses at random and at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Run the golden model and the rust-hdl simulation on the same inputs, and compare.
 
 use golden::params::Params;

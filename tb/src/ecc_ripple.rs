@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The once-per-revolution ripple of `encspeed_ecc` on a rigid eccentric disc, before and
 //! after correction, as in Zhao's Figs. 6 and 7: the run's stimulus, the relative errors of
 //! the M/T and n3 estimates against the true mean speed, their figures and budgets, a CSV

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The emitted `encspeed_ecc.v` (the core with the corrected speeds and the eccentricity
 //! identification) in Verilator, with the harness [`crate::verilator`] generates from its
 //! port list: per-cycle streaming ([`crate::verilator::Simulator::run`]) for cycle-by-cycle

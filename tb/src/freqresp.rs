@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The frequency response of the core's estimators measured on the emitted Verilog, and
 //! Bode figures.
 //!

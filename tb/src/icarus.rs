@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The emitted Verilog replayed in Icarus Verilog against the golden model's outputs, by a
 //! self-checking bench generated from the core's port list ([`replay_bench`]): a second,
 //! independent simulator.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Benches, scenarios and co-simulation for encspeed.
 //!
 //! Every hardware behaviour is checked three ways on the same per-cycle stimuli

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Named scenarios: shaft motions stated in units of the estimator, so that one scenario
 //! means the same thing at any clock, line count and dt.
 //!

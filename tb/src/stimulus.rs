@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Per-cycle input sequences for the core: from the plant (a shaft motion profile sampled
 //! at the clock) or from random waveforms.
 

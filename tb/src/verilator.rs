@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The shipped tops in Verilator, each with a C++ harness generated from its port list.
 //!
 //! A harness ([`harness`]) is the part generated from the top's ports (golden's

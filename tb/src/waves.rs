@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Waveforms: simulate inputs through the rust-hdl core while writing a VCD of every
 //! signal (ports, the synchroniser, the ts counter, Cep, Cdt, Nep1, Ndt1), and read a VCD
 //! back with the `vcd` crate.

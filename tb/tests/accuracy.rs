@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Constant-speed accuracy of every estimator of the bit-true core, 0.01 to 1000 × ω_lim.
 //!
 //! `tb::accuracy` drives the golden `CoreModel` (which the rust-hdl core and the emitted

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The shipped `generated/encspeed_core.v` under a plain Verilog bench of the kind an outside
 //! engineer writes (`tb/icarus/constant_speed_tb.v`): quadrature at constant speeds, every
 //! configuration input tied low but `cfg_dt`, `speed_n3` read as a real number with

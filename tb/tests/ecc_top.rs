@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed_ecc` on the emitted Verilog in Verilator:
 //! - cycle for cycle against its bit-true model (`golden::top::ecc_top`) on eccentric discs in
 //!   x1/x2/x4, forward, backward and through reversals, random and realistic coefficients;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed_ecc_wb` (`encspeed_ecc` behind one Wishbone window: the core's register file
 //! below 0x90, the eccentricity window above) driven as firmware drives it, on a rigid
 //! eccentric disc turning forward at constant speed:

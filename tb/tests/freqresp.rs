@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The frequency response of n3 and of the hardware PC, ET and M/T measured on the
 //! emitted Verilog in Verilator: the same per-cycle inputs as the bit-true measurement
 //! give the same outputs on every cycle, and therefore exactly the same gain and phase.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Fuzzing of the core's invariants on random and adversarial waveforms.
 //!
 //! The golden model (`golden::top::core::CoreModel`) is enough here: `random_cosim.rs` proves the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Known answers of Rairán's Table 1 at constant speed, from hand calculations.
 //!
 //! The vectors in `tb/vectors/table1_known_answers.toml` are worked by hand from Table 1

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Property tests: on random stimuli, the rust-hdl simulation and the emitted Verilog (in
 //! Verilator) equal the bit-true golden model (`golden::top::core::CoreModel`) on every output
 //! and every cycle.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Named scenarios through all three layers: the bit-true golden model, the rust-hdl
 //! simulation and the emitted Verilog in Verilator must agree on every cycle.
 

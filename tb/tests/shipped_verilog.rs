@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The Verilog that ships is the Verilog that was tested: `generated/encspeed_core.v` is
 //! what the generator emits for the default parameters, it passes lint and synthesis, and
 //! it equals the bit-true golden model on every cycle in Verilator and in Icarus;

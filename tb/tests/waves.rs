@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed simulate` writes a VCD under target/; reading it back with the `vcd` crate
 //! gives, cycle for cycle, the ports and the internal counters of the golden model.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 // The bench mode of encspeed_core's harness (a part of it: see stream_main.cpp), for
 // `encspeed bench` (tb::verilator::Verilated::bench): a benchmark, not a test.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 // The event mode of encspeed_ecc's harness (a part of it: see stream_main.cpp), for runs of
 // hundreds of millions of cycles (a revolution at 30 r/min is 2e8 cycles at 100 MHz) that
 // the stream mode would print line by line (tb::ecc_verilator::EccVerilated::run_events).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 // The part of every Verilator harness that does not depend on the top's ports. The harness
 // is this file after the part tb::verilator::harness generates from the top's port list
 // (golden::top::ports): the type `Top`, `u`, `LINE_CHARS`, `read_inputs` (one line of inputs,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The timing shared by the core's sequential arithmetic blocks (the speed calculator, the
 //! baseline speeds, the eccentricity-corrected M/T and n3): a one-deep request register in
 //! which the latest start wins, and a computation of fixed latency.

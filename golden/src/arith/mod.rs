@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Shared sequential arithmetic: the divider and the latest-request timing of the calculators.
 
 pub mod latest_request;

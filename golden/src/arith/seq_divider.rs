@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of the sequential divider `hdl::SeqDivider<W>` (unsigned restoring radix-2
 //! division, one quotient bit per clock), and the fixed-point helpers its callers use.
 //!

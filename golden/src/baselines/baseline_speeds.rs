@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::BaselineSpeeds`: the three baseline estimators (fixed-time PC,
 //! fixed-space ET, M/T) turned from their raw counts into speeds in the format of
 //! [`crate::estimator::speed_calc`], by one sequential shift-add multiplier and one sequential divider.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of the fixed-space (elapsed time, ET) timer `hdl::EtTimer<N>`, and the
 //! ET error bound.
 //!

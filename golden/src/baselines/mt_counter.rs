@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of the M/T counter `hdl::MtCounter<N>` (Ohmae 1982), and the M/T error
 //! bound at a given speed.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of the fixed-time (pulse count, PC) counter `hdl::PcCounter<N>`, and the
 //! PC error bound.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The register window of the eccentricity corrector and identification in
 //! `encspeed_ecc_wb`, as data: the one description from which the hardware
 //! (`hdl::EccRegs`), its cycle model ([`crate::bus::ecc_regs::EccRegsModel`]), the C header
@@ -366,7 +367,8 @@ pub fn registers(speed_bits: u32) -> Vec<Register> {
 /// The C header `encspeed_ecc_regs.h` for `p`: the window's offsets, fields and constants,
 /// as [`crate::bus::regmap::RegMap::c_header`] gives the core's (include both).
 pub fn c_header(p: &Params) -> String {
-    let mut h = String::new();
+    use crate::provenance::{generate_command, preamble, Comment};
+    let mut h = preamble(Comment::Block, &generate_command(p));
     h += "/*\n * encspeed_ecc_regs.h: the eccentricity window of encspeed_ecc_wb (offsets from the\n";
     h += " * base of the same register window as encspeed_regs.h, which describes the offsets\n";
     h += &format!(

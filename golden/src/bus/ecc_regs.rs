@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Cycle model of the eccentricity window's slave (the block `hdl::EccRegs`): bus signals
 //! and `encspeed_ecc`'s corrected speeds and identification results in; bus outputs,
 //! `ecc_c`, `ecc_d` and `ident_arm` out. The map and its behaviour are specified in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Register maps as data and the cycle models of the Wishbone register files.
 
 pub mod ecc_regmap;

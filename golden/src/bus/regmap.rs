@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The register map of `encspeed_core`'s Wishbone register file, as data: the one
 //! description from which the hardware ([`hdl::WbRegs`]), its cycle model
 //! ([`crate::bus::wb_regs::WbRegsModel`]), the C header ([`c_header`]) and the documentation
@@ -962,9 +963,11 @@ pub fn registers(p: &Params) -> Vec<Register> {
     RegMap::new(p).registers
 }
 
-/// The C header of the register map of `p` ([`RegMap::c_header`]).
+/// The C header of the register map of `p` ([`RegMap::c_header`]), after the command that
+/// regenerates it and the licence.
 pub fn c_header(p: &Params) -> String {
-    RegMap::new(p).c_header()
+    use crate::provenance::{generate_command, preamble, Comment};
+    preamble(Comment::Block, &generate_command(p)) + &RegMap::new(p).c_header()
 }
 
 /// The register map of `p` as Markdown ([`RegMap::markdown`]).
@@ -1161,7 +1164,11 @@ mod tests {
     fn c_header_has_guard_and_generator_comment_and_is_deterministic() {
         let p = Params::new(Spec::default()).unwrap();
         let h = c_header(&p);
-        assert!(h.starts_with("/*\n * encspeed_regs.h"));
+        let command = crate::provenance::generate_command(&p);
+        assert!(h.starts_with(&format!(
+            "/* Command: {command} */\n/* SPDX-License-Identifier: MIT OR Apache-2.0 */\n\
+             /*\n * encspeed_regs.h"
+        )));
         assert!(h.contains("#ifndef ENCSPEED_REGS_H\n#define ENCSPEED_REGS_H\n"));
         assert!(h.trim_end().ends_with("#endif /* ENCSPEED_REGS_H */"));
         assert!(h.contains(&format!("counter_bits N = {}", p.counter_bits())));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Cycle model of the Wishbone register file of `encspeed_core` (the block
 //! `hdl::WbRegs`): bus signals and the core's status outputs in, bus outputs and the
 //! core's configuration inputs out. The register map, the bus protocol, coherence, faults

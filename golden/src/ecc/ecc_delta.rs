@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::EccDelta<A, D>`: the eccentricity correction δ of a span between
 //! two positions, in decoder steps, at fractional positions and with the exact phase of the
 //! eccentricity. It supersedes the first corrector (whole-line phase m0, whole lines only).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::ecc::ecc_mt_speed::EccMtSpeed`: the M/T speed of an
 //! eccentricity-corrected step count (issue 4). The M/T counter ([`crate::baselines::mt_counter`])
 //! measures m steps in t clock cycles; `EccDelta` ([`crate::ecc::ecc_delta`]) gives δ, the

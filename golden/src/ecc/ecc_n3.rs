@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::EccN3`: Rairán's n3 with the eccentricity correction δ of its
 //! span applied to its count ([`crate::eccentric::n3`] derives the rule in f64 and measures
 //! what it does).

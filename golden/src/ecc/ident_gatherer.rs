@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of the identification gatherer `hdl::IdentGatherer<A, T, W>`: between two
 //! index (Z) pulses after `arm`, it gathers what both identifications of
 //! [`crate::eccentric::identify`] need, and [`identify_from_sums`] turns the sums into e and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::LineTap`: the line edges that `encspeed_ecc` feeds its
 //! identification gatherer ([`crate::ecc::ident_gatherer`]), taken from the core's registered
 //! `position` and `direction`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::MtCorrector`: the eccentricity-corrected M/T speed of every
 //! window the core's M/T counter closes, from the core's taps (`mt_strobe`, `mt_m`, `mt_t`,
 //! `mt_negative`, `position`, `dt_active`) and the runtime coefficients c = E·cos θ0,

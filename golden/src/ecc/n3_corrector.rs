@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::N3Corrector`: Rairán's n3 corrected for the eccentricity of its
 //! span ([`crate::ecc::ecc_n3`]), from the core's `speed_strobe` taps (`speed_n3`,
 //! `speed_position`, `speed_nep`, `speed_ndt`) and the runtime coefficients c, d.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of the sine table `hdl::SineRom<A, D>`, and the one definition of its
 //! contents ([`sine_table`], which the HDL constructor calls).
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::SpanDelta`: the eccentricity correction δ
 //! ([`crate::ecc::ecc_delta`]) of a span of disc given by its end and its length, as the
 //! core's taps give it: the M/T window's last step and m, n3's `speed_position` and Nep1.

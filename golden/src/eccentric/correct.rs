@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The correction of a line count, derived again (the printed eqs. 23/27 are not usable:
 //! [`super::paper::f_eq27_printed`]).
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Identification of e and θ0 from the K line periods between two Z pulses, at constant
 //! speed.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Eccentric encoder disc (Zhao et al.), layer 1: two plant models, the paper's
 //! approximations, identification of the eccentricity from one revolution of line periods,
 //! and the correction of the estimators' line counts.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Exact A/B/Z edges of an eccentric disc under any shaft motion.
 //!
 //! The disc position is x(t) = K·φ(θ(t))/(2π) lines, φ the apparent angle of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Rairán's n3 on an eccentric disc, and the correction of its count (layer 1, f64).
 //!
 //! n3 is computed from Nep1 and Ndt1, whose spans of disc angle are known from Table 1

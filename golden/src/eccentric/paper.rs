@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Zhao et al.'s speed model, eqs. (8) and (13)–(16), the data of Figs. 2–4, and the
 //! printed discrete correction, eqs. (23)/(26)/(27), as printed and repaired.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Rairán's error bounds and the error budget of the clock-quantised hardware.
 //!
 //! The paper's bounds assume exact pulse instants. The hardware sees each pulse at the

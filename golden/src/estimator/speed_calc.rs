@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of the speed calculator `hdl::SpeedCalc`: Rairán's n1, n2 and n3 from the
 //! registers Nep1 and Ndt1, as signed fixed-point numbers, computed by a sequential
 //! divider.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Rairán's Table 1 as one step per clock (ts = one clock period), in the order of
 //! docs/design-decisions.md#table1-order, with counters that saturate at the counter width
 //! instead of wrapping: the estimator engine of `encspeed_core` (layer 2, bit-true). The

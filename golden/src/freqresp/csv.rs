@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Frequency grids and the CSV the `bode` command writes.
 
 use super::experiment::*;

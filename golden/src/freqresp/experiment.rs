@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The experiment: its plan at one frequency ([`Plan`]), the run on the plant and the
 //! estimators, and the analysis into a [`Measurement`] ([`Experiment`]).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The paper's VCO experiment in simulation: the frequency response of the speed
 //! estimators, measured on the golden models and set beside their small-signal models.
 //!

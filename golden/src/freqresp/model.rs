@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The models a measurement is compared with: the paper's small-signal models and the
 //! ones derived here for n3 and M/T, with the hardware's delay ([`FreqModel`]).
 

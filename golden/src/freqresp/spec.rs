@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! What a frequency-response measurement is asked for ([`BodeSpec`]), its limits and
 //! defaults, why one is refused ([`FreqRespError`]), and the core parameters it runs with.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The front end's configuration values (`cfg_mode`, `cfg_z_mode`) and the register-width
 //! rules its models share: widths 1..=32, counters that saturate rather than wrap.
 

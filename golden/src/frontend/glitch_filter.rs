@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::frontend::glitch_filter::GlitchFilter`: one channel's glitch filter.
 //!
 //! Conventions and the chain it belongs to: [`crate::frontend`].

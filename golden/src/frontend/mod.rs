@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true models of the quadrature front end: [`GlitchFilter`] (one per channel),
 //! [`QuadratureDecoder`] and [`PositionCounter`].
 //!

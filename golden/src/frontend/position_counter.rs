@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::frontend::position_counter::PositionCounter`: position modulo a revolution, index reset/latch and the revolution check.
 //!
 //! Conventions and the chain it belongs to: [`crate::frontend`].

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `hdl::frontend::quadrature_decoder::QuadratureDecoder`: x1/x2/x4 decoding with direction.
 //!
 //! Conventions and the chain it belongs to: [`crate::frontend`].

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Layer-1 float estimators in continuous time: Rairán's synchronised estimator (Table 1)
 //! and the classical fixed-time (PC) and fixed-space (ET) baselines.
 //!

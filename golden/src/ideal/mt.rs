@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The M/T estimator (Ohmae 1982; what hostmot2 and Beckhoff EL51xx do), layer 1.
 //!
 //! At each sample instant k·dt of a free-running grid, m = encoder pulses since the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Layer-1 plant: shaft motion → exact A/B/Z edge instants → clock samples.
 //!
 //! Units throughout: angle in revolutions (rev), speed in rev/s, time in seconds, disc

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Running the model on a stimulus and writing what every output port should carry: as CSV
 //! (a row at every cycle where an output changes) or as a VCD for GTKWave.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The bit-true model as a reference for other implementations: a stimulus in (CSV or
 //! VCD), the expected outputs out (CSV or VCD), and a verdict on another simulator's VCD.
 //!
@@ -16,7 +17,9 @@ pub mod verdict;
 use crate::params::Params;
 use crate::top::core::{CoreInputs, CoreModel, CoreOutputs};
 use crate::top::ecc_top::{check as check_ecc, EccTopInputs, EccTopModel, EccTopOutputs};
-use crate::top::port_fields::{from_port_bits, signed_fields, to_port_bits};
+use crate::top::port_fields::{
+    from_port_bits, from_port_bits_unchecked, port_bits_into, signed_fields, to_port_bits,
+};
 use crate::top::ports::{core_ports, cycle_inputs, cycle_outputs, ecc_ports, Port};
 
 /// The tops the reference model runs.
@@ -138,8 +141,10 @@ pub struct Reference {
     top: RefTop,
     inputs: Vec<RefPort>,
     outputs: Vec<RefPort>,
-    input_ports: Vec<Port>,
-    output_ports: Vec<Port>,
+    input_widths: Vec<u32>,
+    output_widths: Vec<u32>,
+    /// The outputs of the last step.
+    last: Vec<u128>,
 }
 
 impl Reference {
@@ -164,13 +169,34 @@ impl Reference {
             }
         };
         let (input_ports, output_ports) = (cycle_inputs(&ports), cycle_outputs(&ports));
+        // The structs against the port lists, names and order, once: the steps convert
+        // without the names.
+        let (i, o) = (vec![0; input_ports.len()], vec![0; output_ports.len()]);
+        match top {
+            RefTop::Core => {
+                from_port_bits::<CoreInputs>(&i, &input_ports);
+                to_port_bits(
+                    &from_port_bits::<CoreOutputs>(&o, &output_ports),
+                    &output_ports,
+                );
+            }
+            RefTop::Ecc => {
+                from_port_bits::<EccTopInputs>(&i, &input_ports);
+                to_port_bits(
+                    &from_port_bits::<EccTopOutputs>(&o, &output_ports),
+                    &output_ports,
+                );
+            }
+        }
+        let widths = |ports: &[Port]| ports.iter().map(|p| p.width).collect();
         Ok(Reference {
             model,
             top,
             inputs: RefPort::of(&input_ports, inputs_signed),
             outputs: RefPort::of(&output_ports, outputs_signed),
-            input_ports,
-            output_ports,
+            input_widths: widths(&input_ports),
+            output_widths: widths(&output_ports),
+            last: Vec::with_capacity(output_ports.len()),
         })
     }
 
@@ -192,16 +218,22 @@ impl Reference {
     /// One rising clock edge with the inputs `bits` (one pattern per [`Self::inputs`]);
     /// the outputs just after it (one pattern per [`Self::outputs`]).
     pub fn step(&mut self, bits: &[u128]) -> Vec<u128> {
+        self.step_ref(bits).to_vec()
+    }
+
+    /// [`Self::step`] without allocating: the outputs stay valid until the next step.
+    pub fn step_ref(&mut self, bits: &[u128]) -> &[u128] {
         match &mut self.model {
             Model::Core(m) => {
-                let i: CoreInputs = from_port_bits(bits, &self.input_ports);
-                to_port_bits(&m.step(i), &self.output_ports)
+                let i: CoreInputs = from_port_bits_unchecked(bits, &self.input_widths);
+                port_bits_into(&m.step(i), &self.output_widths, &mut self.last);
             }
             Model::Ecc(m) => {
-                let i: EccTopInputs = from_port_bits(bits, &self.input_ports);
-                to_port_bits(&m.step(i), &self.output_ports)
+                let i: EccTopInputs = from_port_bits_unchecked(bits, &self.input_widths);
+                port_bits_into(&m.step(i), &self.output_widths, &mut self.last);
             }
         }
+        &self.last
     }
 }
 

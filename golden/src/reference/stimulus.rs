@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Stimuli: the inputs of a top at its rising clock edges, read as a stream from a CSV file
 //! (one row per change) or from a VCD (sampled at the clock's rising edges).
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! A VCD read as a stream of clock cycles: at each rising edge of the clock, the inputs just
 //! before it (the values the edge samples) and the outputs just before it (the values the
 //! previous edge left). Memory does not grow with the file.
@@ -14,6 +15,7 @@
 use super::RefPort;
 use std::collections::HashMap;
 use std::fmt;
+use std::hash::{BuildHasherDefault, Hasher};
 use std::io::{self, BufRead, BufReader, Read};
 
 /// The clock's port name.
@@ -40,7 +42,7 @@ fn err<T>(msg: impl Into<String>) -> Result<T, VcdError> {
 }
 
 /// One rising edge of the clock.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct VcdEdge {
     /// Edges before this one.
     pub cycle: u64,
@@ -70,25 +72,59 @@ impl<R: Read> Tokens<R> {
             if buf.is_empty() {
                 break;
             }
-            let mut used = 0;
-            let mut done = false;
-            for &b in buf {
-                used += 1;
-                if b.is_ascii_whitespace() {
-                    if !self.token.is_empty() {
-                        done = true;
-                        break;
+            // Skip the whitespace before the token, then take the bytes up to the next.
+            let start = if self.token.is_empty() {
+                match buf.iter().position(|b| !b.is_ascii_whitespace()) {
+                    Some(s) => s,
+                    None => {
+                        let n = buf.len();
+                        self.reader.consume(n);
+                        continue;
                     }
-                } else {
-                    self.token.push(b);
                 }
-            }
-            self.reader.consume(used);
-            if done {
-                break;
+            } else {
+                0
+            };
+            match buf[start..].iter().position(|b| b.is_ascii_whitespace()) {
+                Some(len) => {
+                    self.token.extend_from_slice(&buf[start..start + len]);
+                    self.reader.consume(start + len + 1);
+                    break;
+                }
+                None => {
+                    self.token.extend_from_slice(&buf[start..]);
+                    let n = buf.len();
+                    self.reader.consume(n);
+                }
             }
         }
         Ok((!self.token.is_empty()).then_some(&self.token[..]))
+    }
+}
+
+/// An identifier code as a number: its bytes in base 256, the last eight if it is longer
+/// (identifiers of more than eight characters that share their last eight would collide;
+/// VCD writers number theirs from `!` upward, so a file needs more than 94^8 signals first).
+fn id_number(id: &[u8]) -> u64 {
+    id.iter().fold(0u64, |n, &b| n << 8 | u64::from(b))
+}
+
+/// The hasher of the identifier numbers: they are distinct small integers already, so a
+/// multiplication spreads them well enough, at a fraction of SipHash's cost per value change.
+#[derive(Default)]
+struct IdHasher(u64);
+
+impl Hasher for IdHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 << 8 | u64::from(b)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+        }
+    }
+    fn write_u64(&mut self, n: u64) {
+        self.0 = n.wrapping_mul(0x9e37_79b9_7f4a_7c15);
     }
 }
 
@@ -122,19 +158,25 @@ pub struct VcdCycles<R: Read> {
     timescale: (u32, vcd::TimescaleUnit),
     /// The slots (index into the values) each identifier carries: one signal may carry
     /// several ports, and several signals of other scopes may share its identifier.
-    ids: HashMap<Vec<u8>, Vec<usize>>,
+    ids: HashMap<u64, Vec<usize>, BuildHasherDefault<IdHasher>>,
     inputs: Vec<RefPort>,
     defaulted: Vec<&'static str>,
     output_widths: Vec<Option<u32>>,
     /// Values and their unknown flags: the clock, the inputs, the outputs.
     values: Vec<u128>,
     unknown: Vec<bool>,
-    /// Values as they were before the current timestamp changed them.
-    undo: Vec<(usize, u128, bool)>,
+    /// For the slots the current timestamp changed (`changed`, listed in `touched`): their
+    /// values before it.
+    old_values: Vec<u128>,
+    old_unknown: Vec<bool>,
     changed: Vec<bool>,
+    touched: Vec<usize>,
     time: Option<u64>,
     edges: u64,
     ended: bool,
+    /// Buffers of the scanner: the current token and a vector change's identifier.
+    token: Vec<u8>,
+    id: Vec<u8>,
 }
 
 impl<R: Read> VcdCycles<R> {
@@ -211,9 +253,9 @@ impl<R: Read> VcdCycles<R> {
             vars.iter().find(|v| v.reference == name).cloned()
         };
         // Slots: the clock, then the inputs, then the outputs.
-        let mut ids: HashMap<Vec<u8>, Vec<usize>> = HashMap::new();
+        let mut ids: HashMap<u64, Vec<usize>, BuildHasherDefault<IdHasher>> = HashMap::default();
         let mut bind = |var: &vcd::Var, index: usize| {
-            ids.entry(var.code.to_string().into_bytes())
+            ids.entry(id_number(var.code.to_string().as_bytes()))
                 .or_default()
                 .push(index);
         };
@@ -277,11 +319,15 @@ impl<R: Read> VcdCycles<R> {
             output_widths,
             values: vec![0; n],
             unknown: vec![true; n],
-            undo: Vec::new(),
+            old_values: vec![0; n],
+            old_unknown: vec![true; n],
             changed: vec![false; n],
+            touched: Vec::new(),
             time: None,
             edges: 0,
             ended: false,
+            token: Vec::new(),
+            id: Vec::new(),
         })
     }
 
@@ -317,18 +363,18 @@ impl<R: Read> VcdCycles<R> {
             .collect()
     }
 
-    fn set(&mut self, k: usize, value: u128, unknown: bool) {
-        if !self.changed[k] {
-            self.changed[k] = true;
-            self.undo.push((k, self.values[k], self.unknown[k]));
+    /// Slot `k` as it was before the current timestamp: (value, unknown).
+    fn before(&self, k: usize) -> (u128, bool) {
+        if self.changed[k] {
+            (self.old_values[k], self.old_unknown[k])
+        } else {
+            (self.values[k], self.unknown[k])
         }
-        self.values[k] = value;
-        self.unknown[k] = unknown;
     }
 
     /// Applies a value change of the signal `id`; `bits` MSB first, `0 1 x z`.
     fn change(&mut self, bits: &[u8], id: &[u8]) -> Result<(), VcdError> {
-        let Some(slots) = self.ids.get(id) else {
+        let Some(slots) = self.ids.get(&id_number(id)) else {
             return Ok(());
         };
         let mut value = 0u128;
@@ -350,56 +396,98 @@ impl<R: Read> VcdCycles<R> {
                 }
             }
         }
-        for k in slots.clone() {
-            self.set(k, value, unknown);
+        for &k in slots {
+            if !self.changed[k] {
+                self.changed[k] = true;
+                self.touched.push(k);
+                self.old_values[k] = self.values[k];
+                self.old_unknown[k] = self.unknown[k];
+            }
+            self.values[k] = value;
+            self.unknown[k] = unknown;
         }
         Ok(())
     }
 
-    /// Closes the current timestamp: the edge it held, if the clock rose in it.
-    fn close_timestamp(&mut self) -> Option<VcdEdge> {
-        let clock_was = self.undo.iter().find(|u| u.0 == 0).map(|u| (u.1, u.2));
-        let rose = matches!(clock_was, Some((0, false))) && self.values[0] == 1 && !self.unknown[0];
-        let edge = if rose {
-            let mut values = self.values.clone();
-            let mut unknown = self.unknown.clone();
-            for &(k, v, u) in &self.undo {
-                values[k] = v;
-                unknown[k] = u;
+    /// Closes the current timestamp: true (and `edge` filled) if the clock rose in it.
+    fn close_timestamp(&mut self, edge: &mut VcdEdge) -> bool {
+        let rose = self.changed[0]
+            && self.old_values[0] == 0
+            && !self.old_unknown[0]
+            && self.values[0] == 1
+            && !self.unknown[0];
+        if rose {
+            let n = self.inputs.len();
+            edge.cycle = self.edges;
+            edge.time = self.time.unwrap_or(0);
+            edge.inputs.clear();
+            edge.unknown_input = None;
+            for k in 0..n {
+                let (v, u) = self.before(1 + k);
+                edge.inputs.push(if u { 0 } else { v });
+                if u && edge.unknown_input.is_none()
+                    && !self.defaulted.contains(&self.inputs[k].name)
+                {
+                    edge.unknown_input = Some(self.inputs[k].name);
+                }
             }
-            let inputs: Vec<u128> = (0..self.inputs.len())
-                .map(|k| if unknown[1 + k] { 0 } else { values[1 + k] })
-                .collect();
-            let unknown_input = (0..self.inputs.len())
-                .find(|&k| unknown[1 + k] && !self.defaulted.contains(&self.inputs[k].name))
-                .map(|k| self.inputs[k].name);
-            let e = VcdEdge {
-                cycle: self.edges,
-                time: self.time.unwrap_or(0),
-                inputs,
-                unknown_input,
-                outputs: self.outputs_of(&values, &unknown),
-            };
+            edge.outputs.clear();
+            for (j, width) in self.output_widths.iter().enumerate() {
+                let (v, u) = self.before(1 + n + j);
+                edge.outputs.push((!u && width.is_some()).then_some(v));
+            }
             self.edges += 1;
-            Some(e)
-        } else {
-            None
-        };
-        for &(k, _, _) in &self.undo {
+        }
+        for &k in &self.touched {
             self.changed[k] = false;
         }
-        self.undo.clear();
-        edge
+        self.touched.clear();
+        rose
     }
 
-    /// Reads on to the next rising edge; None at the end of the file.
-    fn next_edge(&mut self) -> Result<Option<VcdEdge>, VcdError> {
-        let io = |e: io::Error| VcdError(format!("reading the VCD: {e}"));
+    /// The next token into `buf` (cleared first, its capacity kept); false at the end.
+    fn token_into(&mut self, buf: &mut Vec<u8>) -> Result<bool, VcdError> {
+        let t = self
+            .tokens
+            .next()
+            .map_err(|e| VcdError(format!("reading the VCD: {e}")))?;
+        buf.clear();
+        match t {
+            Some(t) => {
+                buf.extend_from_slice(t);
+                Ok(true)
+            }
+            None => Ok(false),
+        }
+    }
+
+    /// Reads on to the next rising edge and fills `edge` with it; false at the end of the
+    /// file. Allocates nothing once `edge` has its size.
+    pub fn read_edge(&mut self, edge: &mut VcdEdge) -> Result<bool, VcdError> {
+        if self.ended {
+            return Ok(false);
+        }
+        let mut token = std::mem::take(&mut self.token);
+        let mut id = std::mem::take(&mut self.id);
+        let result = self.read_edge_with(edge, &mut token, &mut id);
+        (self.token, self.id) = (token, id);
+        if result.is_err() {
+            self.ended = true;
+        }
+        result
+    }
+
+    fn read_edge_with(
+        &mut self,
+        edge: &mut VcdEdge,
+        token: &mut Vec<u8>,
+        id: &mut Vec<u8>,
+    ) -> Result<bool, VcdError> {
         loop {
-            let Some(token) = self.tokens.next().map_err(io)? else {
+            if !self.token_into(token)? {
                 self.ended = true;
-                return Ok(self.close_timestamp());
-            };
+                return Ok(self.close_timestamp(edge));
+            }
             match token[0] {
                 b'#' => {
                     let t: u64 = std::str::from_utf8(&token[1..])
@@ -414,42 +502,38 @@ impl<R: Read> VcdCycles<R> {
                     if self.time.is_some_and(|old| t < old) {
                         return err(format!("time goes back to {t}"));
                     }
-                    let edge = self.close_timestamp();
+                    let rose = self.close_timestamp(edge);
                     self.time = Some(t);
-                    if edge.is_some() {
-                        return Ok(edge);
+                    if rose {
+                        return Ok(true);
                     }
                 }
                 b'0' | b'1' | b'x' | b'X' | b'z' | b'Z' => {
-                    let (value, id) = (token[0], token[1..].to_vec());
-                    if id.is_empty() {
+                    if token.len() < 2 {
                         return err("a scalar change without an identifier");
                     }
-                    self.change(&[value], &id)?;
+                    self.change(&token[..1], &token[1..])?;
                 }
                 b'b' | b'B' => {
-                    let bits = token[1..].to_vec();
-                    let id = self
-                        .tokens
-                        .next()
-                        .map_err(io)?
-                        .ok_or_else(|| VcdError("the VCD ends inside a value change".into()))?
-                        .to_vec();
-                    self.change(&bits, &id)?;
+                    if !self.token_into(id)? {
+                        return err("the VCD ends inside a value change");
+                    }
+                    self.change(&token[1..], id)?;
                 }
                 b'r' | b'R' | b's' | b'S' => {
                     // Real and string values: not ports of a top; skip the identifier.
-                    if self.tokens.next().map_err(io)?.is_none() {
+                    if !self.token_into(id)? {
                         return err("the VCD ends inside a value change");
                     }
                 }
                 b'$' => {
-                    if token == b"$comment" {
+                    if token.as_slice() == b"$comment" {
                         loop {
-                            match self.tokens.next().map_err(io)? {
-                                Some(b"$end") => break,
-                                Some(_) => {}
-                                None => return err("the VCD ends inside a $comment"),
+                            if !self.token_into(id)? {
+                                return err("the VCD ends inside a $comment");
+                            }
+                            if id.as_slice() == b"$end" {
+                                break;
                             }
                         }
                     }
@@ -472,16 +556,11 @@ impl<R: Read> Iterator for VcdCycles<R> {
     type Item = Result<VcdEdge, VcdError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        if self.ended {
-            return None;
-        }
-        match self.next_edge() {
-            Ok(Some(edge)) => Some(Ok(edge)),
-            Ok(None) => None,
-            Err(e) => {
-                self.ended = true;
-                Some(Err(e))
-            }
+        let mut edge = VcdEdge::default();
+        match self.read_edge(&mut edge) {
+            Ok(true) => Some(Ok(edge)),
+            Ok(false) => None,
+            Err(e) => Some(Err(e)),
         }
     }
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! A verdict on another implementation's VCD: the model runs on the inputs the VCD's clock
 //! edges sample, and every output the VCD has is compared, bit for bit, with the model's
 //! after each edge from the first reset on.
@@ -108,7 +109,8 @@ pub fn check_exact<R: Read>(
     };
     let present: Vec<bool> = edges.output_widths().iter().map(|w| w.is_some()).collect();
     let compare = |verdict: &mut Verdict,
-                   (cycle, time, expected): &(u64, u64, Vec<u128>),
+                   (cycle, time): (u64, u64),
+                   expected: &[u128],
                    got: &[Option<u128>]| {
         verdict.cycles += 1;
         for (k, port) in ports.iter().enumerate().filter(|(k, _)| present[*k]) {
@@ -117,8 +119,8 @@ pub fn check_exact<R: Read>(
                 verdict.mismatches += 1;
                 if verdict.first.len() < options.report {
                     verdict.first.push(Mismatch {
-                        cycle: *cycle,
-                        time: *time,
+                        cycle,
+                        time,
                         port: port.name,
                         expected: port.decimal(expected[k]),
                         got: got[k].map_or("x".to_string(), |g| port.decimal(g)),
@@ -128,13 +130,17 @@ pub fn check_exact<R: Read>(
         }
     };
     let mut started = false;
-    let mut pending: Option<(u64, u64, Vec<u128>)> = None;
+    // The edge whose outputs are compared with the values before the next edge, and the
+    // model's outputs after it.
+    let mut pending: Option<(u64, u64)> = None;
+    let mut expected: Vec<u128> = Vec::with_capacity(ports.len());
     let mut any_edge = false;
-    for edge in edges.by_ref() {
-        let edge = edge?;
+    let mut edge = Default::default();
+    while edges.read_edge(&mut edge)? {
+        let edge = &edge;
         any_edge = true;
-        if let Some(p) = pending.take() {
-            compare(&mut verdict, &p, &edge.outputs);
+        if let Some(at) = pending.take() {
+            compare(&mut verdict, at, &expected, &edge.outputs);
         }
         if !started && edge.inputs[reset] == 1 {
             started = true;
@@ -149,9 +155,11 @@ pub fn check_exact<R: Read>(
                 )));
             }
         }
-        let outputs = model.step(&edge.inputs);
+        let outputs = model.step_ref(&edge.inputs);
         if started {
-            pending = Some((edge.cycle, edge.time, outputs));
+            expected.clear();
+            expected.extend_from_slice(outputs);
+            pending = Some((edge.cycle, edge.time));
         }
     }
     if !any_edge {
@@ -162,8 +170,8 @@ pub fn check_exact<R: Read>(
             "reset is never 1 at a rising edge: the comparison starts at the first reset".into(),
         ));
     }
-    if let Some(p) = pending.take() {
-        compare(&mut verdict, &p, &edges.final_outputs());
+    if let Some(at) = pending.take() {
+        compare(&mut verdict, at, &expected, &edges.final_outputs());
     }
     Ok(verdict)
 }

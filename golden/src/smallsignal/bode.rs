@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bode data (frequency, gain, phase) and its CSV form.
 
 use super::error::{SmallSignalError, MAX_FREQUENCIES};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Why a small-signal quantity was refused.
 
 use std::fmt;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The elementary factors of the paper's transfer functions (ZOH, delay, moving average,
 //! lead), each evaluated two ways: literally as printed, at any complex s
 //! ([`Factor::eval`]), and in closed polar form on s = jω ([`Factor::polar`]), which gives

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Small-signal models of the incremental encoder and its speed estimators, after
 //! Vázquez-Gutiérrez, O'Sullivan and Kavanagh, "Small-signal modeling of the incremental
 //! optical encoder for motor control", IEEE Trans. Ind. Electron., 2019 ("the paper").

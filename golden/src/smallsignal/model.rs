@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The paper's transfer functions as named products of [`Factor`]s: eqs. (15), (16), (24),
 //! (27)–(29) and (33), built from a validated [`OperatingPoint`].
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The operating point of the small-signal models: resolution, speed and sample time.
 
 use super::error::SmallSignalError;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of the whole `encspeed_core` (layer 2): the hardware's registers, clock
 //! edge for clock edge, built from the bit-true models of its blocks.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true model of `encspeed_ecc`: `encspeed_core` with the eccentricity-corrected M/T
 //! speed ([`crate::ecc::mt_corrector`]) of every window, from runtime coefficients `ecc_c`,
 //! `ecc_d` (c = E·cos θ0, d = E·sin θ0, Q15.16 lines: [`crate::ecc::ecc_delta::coefficients`]).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Cycle model of `encspeed_ecc_wb` (the block `hdl::EncspeedEccWb`): `encspeed_ecc`
 //! ([`EccTopModel`]) behind one Wishbone window served by two slaves, the core's register
 //! file ([`WbRegsModel`], offsets below [`ECC_BASE`]) and the eccentricity window

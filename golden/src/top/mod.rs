@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Bit-true models of the shipped tops, and their ports.
 
 pub mod core;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! How the Rust structs of one cycle's values (`CoreInputs`, `EccTopOutputs`, …) map onto
 //! their top's port list ([`crate::top::ports`]): every field carries one port, and the
 //! fields are visited in the order of the list ([`PortFields`]). The benches turn a struct
@@ -153,6 +154,29 @@ pub fn from_port_bits<T: PortFields>(bits: &[u128], ports: &[Port]) -> T {
         k += 1;
     });
     assert_eq!(k, ports.len(), "a port without a field");
+    values
+}
+
+/// The bit patterns of `values`' fields into `out` (cleared first), the k-th field `widths[k]`
+/// bits wide: [`to_port_bits`] without the names checked, for per-cycle use once
+/// [`to_port_bits`] has checked the struct against the list.
+pub fn port_bits_into<T: PortFields + Clone>(values: &T, widths: &[u32], out: &mut Vec<u128>) {
+    out.clear();
+    values.clone().visit_ports(&mut |_, v| {
+        let k = out.len();
+        out.push(v.bits(widths[k]));
+    });
+}
+
+/// The values whose bit patterns are `bits`, the k-th `widths[k]` bits wide: [`from_port_bits`]
+/// without the names checked.
+pub fn from_port_bits_unchecked<T: PortFields>(bits: &[u128], widths: &[u32]) -> T {
+    let mut values = T::default();
+    let mut k = 0;
+    values.visit_ports(&mut |_, v| {
+        v.set_bits(bits[k], widths[k]);
+        k += 1;
+    });
     values
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The ports of the shipped tops, each top's list declared once: the emitted Verilog's
 //! header, the manifest and docs/ports.md are written from [`core_ports`] and [`ecc_ports`]
 //! (and `encspeed_wb`'s from [`crate::top::wb_top::wb_top_ports`]), the benches' harnesses

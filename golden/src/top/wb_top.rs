@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Cycle model of `encspeed_wb` (the block `hdl::EncspeedWb`): the core
 //! ([`CoreModel`]) behind its Wishbone register file ([`WbRegsModel`]), wired 1:1 as the
 //! hardware wires them.

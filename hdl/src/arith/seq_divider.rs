@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Sequential unsigned divider: restoring radix-2 division of a W-bit numerator by a W-bit
 //! denominator, one quotient bit per clock, for the fixed-point speed estimates (n1, n2, n3,
 //! PC, ET, M/T) of issue 3. A standalone block; its bit-true model is

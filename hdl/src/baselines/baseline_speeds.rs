@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Baseline speeds: the raw results of the three baseline estimators ([`PcCounter`],
 //! [`EtTimer`], [`MtCounter`]) as signed fixed-point speeds in the format of [`SpeedCalc`], by
 //! one sequential shift-add multiplier and one sequential divider. A standalone block; its

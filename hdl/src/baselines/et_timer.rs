@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Fixed-space (ET) timer: clock cycles between consecutive steps of one direction.
 //! Bit-true model: [`golden::baselines::et_timer::EtTimer`], whose module docs give the semantics,
 //! latency and error bound in full.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The PC, ET and M/T baseline estimators and their speeds.
 
 pub mod baseline_speeds;

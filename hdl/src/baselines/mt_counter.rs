@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! M/T counter (Ohmae 1982): per window of a free-running time base, m = steps since the
 //! step that closed the previous measurement (the anchor) and T = cycles from the anchor to
 //! the last of them; speed = m·dt/T (units of ω_lim), left to a divider downstream.

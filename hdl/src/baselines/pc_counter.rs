@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Fixed-time (PC) counter: net signed steps in consecutive windows of `cfg_dt` cycles of
 //! a free-running time base. Bit-true model: [`golden::baselines::pc_counter::PcCounter`], whose module
 //! docs give the semantics, latency and error bound in full.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Wishbone slave of the eccentricity window of `encspeed_ecc_wb`: drives `encspeed_ecc`'s
 //! `ecc_c`, `ecc_d` and `ident_arm`, and reads its corrected speeds and identification
 //! results. The map and its behaviour are specified in [`golden::bus::ecc_regmap`] (offsets,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Wishbone B4 register files.
 
 pub mod ecc_regs;

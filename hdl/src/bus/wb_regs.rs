@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Wishbone B4 classic register file of `encspeed_core`: drives the core's configuration
 //! inputs and reads its status outputs. The register map, the bus protocol, coherence,
 //! faults and interrupts are specified in [`golden::bus::regmap`] (offsets, fields, reset values,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The eccentricity correction δ of a span, in decoder steps, at fractional positions and
 //! with the exact phase θ0 (it supersedes the first corrector, which rounded θ0 to a line
 //! and knew only line positions):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Combinational datapath of [`EccDelta`](crate::EccDelta), written as `Verilog::Custom`
 //! because `#[hdl_gen]` does not emit sign extension, arithmetic shifts and mixed-width
 //! sums with the right widths (docs/design-decisions.md#rust-hdl-rules, D10 and R5). Its

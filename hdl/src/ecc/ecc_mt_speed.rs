@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Corrected M/T speed (issue 4): the M/T counter's m steps in t cycles, corrected by the
 //! eccentricity correction δ of the same span ([`EccDelta`](crate::ecc::ecc_delta)), as a signed
 //! fixed-point speed in the format of `speed_mt` of [`BaselineSpeeds`](crate::BaselineSpeeds):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Rairán's n3 with the eccentricity correction of its span. Bit-true model:
 //! [`golden::ecc::ecc_n3`], whose module docs give the rule (n3·(1 − δ) when Nep1 = 1, n3 − δ
 //! when Nep1 ≥ 2 and Ndt1 = 1, n3 otherwise, on the magnitude, clamped, sign put back), the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Identification gatherer: between two index (Z) pulses after `arm`, N, T_min, T_max and
 //! their positions, Σ T, Σ T·sin(2πp/K) and Σ T·cos(2πp/K), with a sticky `done`. Bit-true
 //! model: [`golden::ecc::ident_gatherer::IdentGatherer`], whose module docs give the semantics,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Stage-2 arithmetic of the identification gatherer ([`crate::ecc::ident_gatherer`]): two
 //! T × 24-bit multiply-adds written as `Verilog::Custom` (rust-hdl multiplies only 16 bits),
 //! with an `update()` that repeats the Verilog in the same widths, written independently of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The line edges of `encspeed_ecc`'s identification: from the core's registered `position`
 //! and `direction`, a `line` pulse at the first step of each line of forward motion, its
 //! line number and the clock cycles since the previous one. Bit-true model:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Eccentricity correction and online identification (Zhao): sine table, span correction, corrected M/T and n3, identification gatherer.
 
 pub mod ecc_delta;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The eccentricity-corrected M/T speed of each window the core's M/T counter closes: the
 //! span of the window from its last step's position and its step count
 //! ([`crate::SpanDelta`]: m mod R, the ends, `EccDelta`), then ±(m − δ)·dt·2^(F−s)/t

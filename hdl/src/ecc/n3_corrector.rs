@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Rairán's n3 corrected for the eccentricity of its span: at each `speed_strobe` of the
 //! core, the span from `speed_position` and `speed_nep` ([`crate::SpanDelta`], in the
 //! order of motion), then [`crate::EccN3`] (n3·(1 − δ) at Nep1 = 1, n3 − δ/2^s at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Sine table of K entries indexed by position plus a phase offset. Bit-true model:
 //! [`golden::ecc::sine_rom::SineRom`], whose module docs give the contents, the address
 //! arithmetic and the error bound; the contents come from [`golden::ecc::sine_rom::sine_table`]

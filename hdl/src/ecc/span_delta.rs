@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The eccentricity correction δ of a span given by its end P and its length in steps:
 //! r = count mod R by restoring subtraction (N steps, so a span of more than a revolution
 //! gets its exact ends), the ends in half-steps, then [`crate::EccDelta`]. Bit-true model,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Synchronous ROM of exactly K words behind an A-bit address: `data` ← `mem[address]` at
 //! each rising edge (one cycle of latency, no reset), for [`crate::SineRom`].
 //!

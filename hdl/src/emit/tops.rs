@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The shipped tops: the one list that `encspeed generate`, `encspeed docs`, `encspeed synth`
 //! and the tests that prove `generated/` current iterate over.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Mode scaling of a speed (combinational): a signed speed in decoder steps per dt to
 //! lines per dt (units of ω_lim). Bit-true model: [`golden::top::core::mode_scale`].
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Speed calculator: Rairán's n1, n2 and n3 from the registers Nep1 and Ndt1, as signed
 //! fixed-point speeds, by a sequential divider and a sequential shift-add multiplier.
 //! `encspeed_core` starts one at each Table 1 update (and a `SpeedTag` beside it); its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Output registers of the Rairán speeds: `speed_n1..3`, `speed_strobe` and the "a speed
 //! has been computed" flag behind `valid`.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The speed calculator's companion: carries what a speed request was made from (the
 //! position at the request, Nep1 and Ndt1) to the edge at which the calculator publishes the
 //! speeds of that request. Bit-true model: the `tag` of [`golden::top::core::CoreModel`], a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The synchronised Nep/Ndt registers of Rairán's Table 1: Cep, Nep1, Ndt1.
 //!
 //! Cep counts pulses since the last dt tick. At a tick, Nep1 takes Cep if it is non-zero

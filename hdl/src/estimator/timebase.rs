@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The ts/dt time base of Rairán's Table 1: the ts counter ("clock" in the paper) and the
 //! dt-interval counter Cdt.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Programmable glitch filter of one synchronised encoder channel, with a counter of
 //! rejected pulses. Bit-true model: [`golden::frontend::GlitchFilter`].
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The quadrature front end: synchronisers, glitch filters, start-up hold, decoder, position.
 
 pub mod glitch_filter;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Position counter modulo the counts per revolution, with index (Z) reset/latch and a
 //! check of the count of every revolution. Bit-true model:
 //! [`golden::frontend::PositionCounter`].

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Quadrature decoder: x1, x2 or x4 steps with direction, and illegal-transition detection.
 //! Bit-true model: [`golden::frontend::QuadratureDecoder`].
 //!

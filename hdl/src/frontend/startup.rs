@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Start-up hold of the quadrature front end.
 //!
 //! After reset the synchronisers and the glitch filters hold cleared (low) values, not

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Two-flop synchroniser for one asynchronous encoder channel.
 //!
 //! Latency: 2 clock cycles from the clock edge that samples `level_in` to `level_out`.

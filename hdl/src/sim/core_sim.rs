@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Direct-drive simulation of the rust-hdl core behind a width-independent interface.
 //!
 //! rust-hdl counter widths are const generics; [`build_core`] picks the instance that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The rust-hdl `encspeed_ecc` ([`crate::EncspeedEcc`]) driven cycle by cycle, in the form
 //! of [`golden::top::ecc_top::EccTopModel::step`], for any counter width.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Direct-drive simulation of `encspeed_ecc_wb` ([`crate::top::ecc_wb_top::EncspeedEccWb`]) of
 //! any counter width, stepped edge for edge like [`golden::top::ecc_wb_top::EccWbTopModel`].
 

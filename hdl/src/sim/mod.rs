@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Direct-drive simulations of the tops behind width-independent interfaces.
 
 pub mod core_sim;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Direct-drive simulation of `encspeed_wb` ([`crate::top::wb_top::EncspeedWb`]) of any counter
 //! width, stepped edge for edge like [`golden::top::wb_top::WbTopModel`].
 

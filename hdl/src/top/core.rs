@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed_core`: the top of the IP. Its bit-true model is [`golden::top::core::CoreModel`],
 //! whose module docs give the rules this file wires (start-up hold, reversal, priming, mode
 //! scaling, configuration defaults, faults, `valid`).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed_ecc`: `encspeed_core` with the eccentricity-corrected M/T speed of every
 //! window ([`crate::MtCorrector`]) and n3 of every speed ([`crate::N3Corrector`]) from
 //! runtime coefficients. Bit-true model:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed_ecc_wb`: [`EncspeedEcc`] behind one Wishbone B4 classic window served by two
 //! slaves: the core's register file [`WbRegs`] (offsets below
 //! [`golden::bus::ecc_regmap::ECC_BASE`], the map of `encspeed_wb` unchanged) and the

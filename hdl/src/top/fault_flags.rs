@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Sticky fault flags and the glitch counter of the core.
 //!
 //! Per edge: each flag is set by its event pulse (`illegal`; `rejected_a` or `rejected_b`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The shipped tops and the core's fault flags.
 
 pub mod core;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed_wb`: the core [`EncspeedCore`] behind its Wishbone B4 classic register file
 //! [`WbRegs`], wired 1:1 (every configuration output of the file drives the core input of
 //! the same name, every core output drives the file's status input of the same name). Its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `SeqDivider<W>` against its bit-true model `golden::arith::seq_divider::SeqDividerModel`, every
 //! cycle: the rust-hdl simulation (direct drive) on proptest stimuli for several W, and the
 //! emitted Verilog of W = 24 in Icarus Verilog (a self-checking bench written under

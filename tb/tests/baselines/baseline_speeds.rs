@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `BaselineSpeeds` against its bit-true model `golden::baselines::baseline_speeds::BaselineSpeedsModel`,
 //! every cycle: the rust-hdl simulation (direct drive) on proptest stimuli for (N, F) =
 //! (8, 2), (12, 8), (24, 16) and the ends (32, 24) (random start timings, bursts of starts

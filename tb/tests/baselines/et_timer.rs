@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `EtTimer` (the ET baseline's period between steps) against its bit-true model
 //! (`golden::baselines::et_timer`), every cycle: the rust-hdl simulation (direct
 //! drive) on proptest stimuli at N = 8, 24 and 2, and the emitted Verilog

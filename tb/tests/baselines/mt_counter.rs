@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `MtCounter` (the M/T baseline's steps and cycles per window) against its bit-true model
 //! (`golden::baselines::mt_counter`), every cycle: the rust-hdl simulation (direct
 //! drive) on proptest stimuli at N = 8, 24 and 2, and the emitted Verilog

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `PcCounter` (the PC baseline's count of signed steps per dt window) against its bit-true
 //! model (`golden::baselines::pc_counter`), every cycle: the rust-hdl simulation (direct
 //! drive) on proptest stimuli at N = 8, 24 and 2, and the emitted Verilog

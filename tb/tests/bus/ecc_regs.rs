@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `EccRegs` (the eccentricity window's Wishbone slave) against its cycle model
 //! `golden::bus::ecc_regs::EccRegsModel`, every cycle, at the narrowest and widest speeds of
 //! `encspeed_ecc` (S = 25 for N = 8, S = 49 for N = 32) and the default (S = 41): random

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `WbRegs` against its cycle model `golden::bus::wb_regs::WbRegsModel`, every cycle, on random
 //! Wishbone transactions (reads and writes of mapped and unmapped offsets with random byte
 //! lanes, W1C writes to `STATUS` and `IRQ_STATUS`, LO-then-HI speed reads, idle cycles,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Comparing a block with its model row by row: the first mismatching cycle of a rust-hdl
 //! run, and an Icarus replay that returns the outputs of every cycle.
 

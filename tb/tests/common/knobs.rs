@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The front-end benches' stimulus knobs: a seeded xorshift generator (the proptest input is
 //! the seed, the length and the knobs), so that one case is a few hundred to a few thousand
 //! cycles without proptest holding a vector per cycle.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Verilator lint of one block's Verilog with documented waivers.
 
 /// `verilator --lint-only -Wall` on `verilog` (top module `top`), in

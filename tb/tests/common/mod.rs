@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Shared by the block benches (one test binary per subsystem, `tb/tests/<subsystem>/`, each
 //! including this module as `common`): stimuli, clock edges, the proptest configuration and
 //! Icarus replay benches (running the tools, and where their work goes, is the `tools`

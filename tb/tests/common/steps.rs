@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The baseline counters' stimulus (`PcCounter`, `EtTimer`, `MtCounter`): a stream of
 //! encoder steps in segments of 32..512 cycles, each with its own step rate (none at all,
 //! for stalls that saturate the 8-bit counters, up to a step on every cycle), its own

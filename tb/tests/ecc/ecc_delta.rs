@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `EccDelta` against its bit-true model (`golden::ecc::ecc_delta::EccDelta`), every cycle: the
 //! rust-hdl simulation (direct drive) on proptest stimuli for several (A, D, K), K = 1000
 //! and other K not a power of two included, and the emitted Verilog in Icarus Verilog on a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `EccMtSpeed` against its bit-true model `golden::ecc::ecc_mt_speed::EccMtSpeedModel`, every
 //! cycle: the rust-hdl simulation (direct drive) on proptest stimuli for (N, F) = (8, 16),
 //! (12, 8), (24, 16), (32, 16) and the ends (8, 2), (32, 24) (random start timings, bursts

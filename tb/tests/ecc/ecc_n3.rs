@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `EccN3` against its bit-true model (`golden::ecc::ecc_n3`), every cycle: the rust-hdl
 //! simulation on proptest stimuli at S = 25, 41 and 49 (N = 8, 24, 32), and the emitted
 //! Verilog in Icarus (self-checking replay bench under `target/`, one `RESULT` line).

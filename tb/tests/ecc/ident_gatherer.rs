@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `IdentGatherer` against its bit-true model (`golden::ecc::ident_gatherer`), every cycle: the
 //! rust-hdl simulation (direct drive) on proptest stimuli, and the emitted Verilog in Icarus
 //! Verilog (a self-checking replay bench written under `target/` at test time, ending in

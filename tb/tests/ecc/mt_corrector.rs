@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `MtCorrector` (the eccentricity-corrected M/T speed of each window) against its bit-true
 //! model `golden::ecc::mt_corrector::MtCorrectorModel`, every cycle: the rust-hdl simulation
 //! (direct drive) on proptest stimuli for (N, F) = (24, 16), (8, 2), (8, 16) and (32, 24)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `N3Corrector` (Rairán's n3 corrected for the eccentricity of its span) against its
 //! bit-true model `golden::ecc::n3_corrector::N3CorrectorModel`, every cycle: the rust-hdl
 //! simulation (direct drive) on proptest stimuli for N = 24, 8 and 32 (S = N + 17) and

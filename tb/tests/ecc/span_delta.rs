@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `SpanDelta` (δ of a span given by its end and its length) against its bit-true model,
 //! every cycle: `golden::ecc::span_delta` (the span's ends in half-steps, `half_steps`, and
 //! its value, `span_delta`) with the timing its module docs give (the start edge and N − 1

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `SpeedCalc` against its bit-true model `golden::estimator::speed_calc::SpeedCalcModel`, every cycle:
 //! the rust-hdl simulation (direct drive) on proptest stimuli for N = 8, 16, 24, 32 and
 //! F = 0, 8, 16, 24 (random start timings, starts while busy, random resets), and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `SpeedTag` (the request tag carried beside the speed calculator) against its bit-true
 //! model, every cycle: the `tag` of `golden::top::core::CoreModel`, a
 //! `golden::arith::latest_request::LatestRequest` of the constructor's latency whose result

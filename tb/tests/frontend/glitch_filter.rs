@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `GlitchFilter` against its bit-true model (`golden::frontend::glitch_filter`), every cycle,
 //! on random stimuli with random resets and run-time changes of `cfg_filter`:
 //! - rust-hdl simulation (direct drive, as `hdl::sim::core_sim`) = model: property tests;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `PositionCounter` against its bit-true model (`golden::frontend::position_counter`),
 //! every cycle, on a virtual shaft or random inputs, with random resets and run-time changes
 //! of R and the index mode:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `QuadratureDecoder` against its bit-true model (`golden::frontend::quadrature_decoder`),
 //! every cycle, on random walks of A/B with random resets and run-time changes of
 //! `cfg_mode` (3 included):

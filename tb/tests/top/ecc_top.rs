@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed_ecc` (corrected M/T and n3) in rust-hdl against its bit-true model (`golden::top::ecc_top`), cycle for
 //! cycle, on an eccentric disc driven forward, backward and through reversals, in x1, x2
 //! and x4, with random coefficients and dt short enough that windows queue in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! Synthesis and place and route of one top on an iCE40: yosys `synth_ice40` for the cell
 //! counts, nextpnr-ice40 for the placed size and the routed maximum frequency, and the
 //! boundary wrapper that makes a top with more port bits than the package has pins placeable.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
 //! The one place that finds and runs the external tools of encspeed's tests and benches:
 //! Icarus Verilog (`iverilog`, `vvp`), Verilator, yosys and nextpnr.
 //!
