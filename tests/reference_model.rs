@@ -65,6 +65,24 @@ fn text(o: &Output) -> String {
     )
 }
 
+/// Column `column` of `port`'s row in a `check --mode bound` report (2: samples judged,
+/// 5: max error/bound).
+fn bound_column<T: std::str::FromStr>(report: &str, port: &str, column: usize) -> T {
+    let row = report
+        .lines()
+        .find(|l| l.split_whitespace().next() == Some(port))
+        .unwrap_or_else(|| panic!("no row for {port} in:\n{report}"));
+    match row.split_whitespace().nth(column).map(str::parse) {
+        Some(Ok(v)) => v,
+        _ => panic!("column {column} of `{row}`"),
+    }
+}
+
+/// The samples of `port` judged in a `check --mode bound` report.
+fn judged(report: &str, port: &str) -> u64 {
+    bound_column(report, port, 2)
+}
+
 fn scratch(name: &str) -> PathBuf {
     let d = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("target/reference-model-test")
@@ -200,6 +218,16 @@ fn vectors_are_what_verilator_gives_and_check_passes_its_vcd_and_finds_a_wrong_c
         expected
     );
 
+    // check --mode bound: the same run judged against the estimators' proven bounds, with
+    // speed changes, reversals, faults and resets between the stretches of constant speed.
+    let o = encspeed(&["check", "--mode", "bound", "--vcd", &path("verilator.vcd")]);
+    let t = text(&o);
+    println!("{t}");
+    assert!(o.status.success() && t.contains("PASS: "), "{t}");
+    for port in ["speed_n1", "speed_n3", "speed_pc", "speed_et", "speed_mt"] {
+        assert!(judged(&t, port) > 0, "{port} never judged: {t}");
+    }
+
     // A core built for another dt is not this one: exit 1 with the first mismatches.
     let o = encspeed(&[
         "check",
@@ -274,5 +302,51 @@ fn unusable_vcds_exit_2_with_a_message() {
         let t = text(&o);
         assert_eq!(o.status.code(), Some(2), "{name} {extra:?}: {t}");
         assert!(t.contains(message), "{name} {extra:?}: {t}");
+    }
+}
+
+/// The example of an implementation that is not this core: `tb/icarus/table1_lite.v`, a
+/// hand-written Table 1 (x1 only, n3 alone, its own serial divider, Q.8 truncated, another
+/// latency), run in Icarus at constant speeds from 0.37 to 61 lines per dt in both
+/// directions, passes `check --mode bound` within eq. (13); built with a 3 % gain error it
+/// fails with exit 1.
+#[test]
+fn a_hand_written_table1_core_passes_bound_mode_and_a_broken_one_fails() {
+    let dir = scratch("table1_lite");
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tb/icarus");
+    let bench = src.join("table1_lite_tb.v");
+    let core = src.join("table1_lite.v");
+    let sources = [bench.to_str().unwrap(), core.to_str().unwrap()];
+    let map = "clk=clock,rst=reset,a=enc_a,b=enc_b,n3=speed_n3,n3_stb=speed_strobe";
+    for (name, defines) in [("lite", vec![]), ("broken", vec!["-DTABLE1_LITE_BROKEN"])] {
+        tools::iverilog(&dir, &defines, &sources, &format!("{name}.vvp")).unwrap();
+        tools::vvp(&dir, &format!("{name}.vvp"), &[&format!("+vcd={name}.vcd")]).unwrap();
+        let vcd = dir.join(format!("{name}.vcd"));
+        let o = encspeed(&[
+            "check",
+            "--mode",
+            "bound",
+            "--vcd",
+            vcd.to_str().unwrap(),
+            "--dt-cycles",
+            "1000",
+            "--timeout-s",
+            "1",
+            "--frac-bits",
+            "8",
+            "--map",
+            map,
+        ]);
+        let t = text(&o);
+        println!("{name}:\n{t}");
+        if name == "lite" {
+            assert!(o.status.success() && t.contains("PASS: "), "{t}");
+            assert!(judged(&t, "speed_n3") >= 100, "{t}");
+            assert!(bound_column::<f64>(&t, "speed_n3", 5) <= 1.0, "{t}");
+            assert!(t.contains("not in the VCD, not judged: speed_pc, speed_et, speed_n1"));
+        } else {
+            assert_eq!(o.status.code(), Some(1), "{t}");
+            assert!(t.contains("FAIL: ") && t.contains("speed_n3"), "{t}");
+        }
     }
 }

@@ -26,10 +26,8 @@
 //! 2 cycles; 10 000 keeps a margin and round numbers. The slowest point then has one line
 //! per 100 dt = 1 s = 10⁶ cycles, and the run still sees six of its estimates.
 
-use golden::baselines::et_timer::et_error_bound;
-use golden::baselines::mt_counter::mt_error_bound_at_speed;
-use golden::baselines::pc_counter::pc_error_bound;
-use golden::estimator::bounds::{er1_max, er3_max, n3_error_budget};
+use golden::estimator::bounds::{allowed, er3_max, estimator_bound, worst_n1};
+pub use golden::estimator::bounds::{Allowed, Estimator};
 use golden::estimator::speed_calc::speed_lsb_error;
 use golden::ideal::fixed_space;
 use golden::ideal::plant::{
@@ -65,48 +63,6 @@ pub const LOW_SPEED_PERIODS: u64 = 6;
 /// dt windows measured per point at high speed.
 pub const HIGH_SPEED_WINDOWS: u64 = 30;
 
-/// One speed output of the core.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Estimator {
-    /// Fixed-time pulse count, `speed_pc`.
-    Pc,
-    /// Fixed-space elapsed time (clock-timed), `speed_et`.
-    Et,
-    /// Rairán's n1 = Nep1/Ndt1, `speed_n1`.
-    N1,
-    /// Rairán's n3 (harmonic mean, eq. 11), `speed_n3`.
-    N3,
-    /// M/T (Ohmae), `speed_mt`.
-    Mt,
-}
-
-impl Estimator {
-    /// Every estimator, in the order of [`PointResult::stats`].
-    pub const ALL: [Estimator; 5] = [
-        Estimator::Pc,
-        Estimator::Et,
-        Estimator::N1,
-        Estimator::N3,
-        Estimator::Mt,
-    ];
-
-    /// Short name (CSV columns, legends).
-    pub fn name(self) -> &'static str {
-        match self {
-            Estimator::Pc => "pc",
-            Estimator::Et => "et",
-            Estimator::N1 => "n1",
-            Estimator::N3 => "n3",
-            Estimator::Mt => "mt",
-        }
-    }
-
-    /// Index into [`PointResult::stats`].
-    pub fn index(self) -> usize {
-        self as usize
-    }
-}
-
 /// Clock, disc, dt and decoding mode of a sweep.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Setup {
@@ -120,22 +76,6 @@ pub struct Setup {
     pub counter_bits: u32,
     /// `cfg_mode`: 0 x1, 1 x2, 2 x4.
     pub cfg_mode: u8,
-}
-
-/// The ranges Table 1's registers can take at constant speed with clock-quantised pulses.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Allowed {
-    /// Nep1, inclusive.
-    pub nep: (u64, u64),
-    /// Ndt1, inclusive.
-    pub ndt: (u64, u64),
-}
-
-impl Allowed {
-    /// Both ranges hold a single value: the estimate cannot dither at any clock phase.
-    pub fn single(&self) -> bool {
-        self.nep.0 == self.nep.1 && self.ndt.0 == self.ndt.1
-    }
 }
 
 impl Setup {
@@ -196,75 +136,29 @@ impl Setup {
         self.dt_cycles as f64 / (4.0 * r)
     }
 
-    /// What clock quantisation allows for Nep1 and Ndt1 at r ω_lim (r_s = steps per dt,
-    /// P = dt/r_s, D = dt cycles).
-    ///
-    /// A pulse at instant t (cycles) is seen at q = ⌈t⌉; with a restarting pulse t0,
-    /// q_i − q_0 = ⌈iP − δ⌉ for some δ ∈ [0, 1).
-    /// - r_s > 1: Nep1 counts the i ≥ 0 with q_i − q_0 ≤ D − 1: every i with iP ≤ D − 1,
-    ///   none with iP ≥ D, so Nep1 ∈ [⌊r_s(D−1)/D⌋ + 1, ⌈r_s⌉], Ndt1 = 1.
-    /// - r_s ≤ 1: the pulse interval is P' ∈ {⌊P⌋, ⌈P⌉}; the ticks strictly before the
-    ///   next pulse number ⌈P'/D⌉ − 1 (a tick on the pulse is cancelled by the restart, and
-    ///   at r_s = 1 exactly the pulse on the tick is dropped instead, Ndt1 = 1), so
-    ///   Ndt1 ∈ [⌈⌊P⌋/D⌉ − 1, ⌈⌈P⌉/D⌉ − 1] (at least 1), Nep1 = 1.
+    /// What clock quantisation allows for Nep1 and Ndt1 at r ω_lim ([`allowed`]).
     pub fn allowed(&self, r: f64) -> Allowed {
-        let rs = self.steps_per_dt(r);
-        let d = self.dt_cycles as f64;
-        if rs > 1.0 {
-            Allowed {
-                nep: (
-                    ((rs * (d - 1.0) / d).floor() + 1.0) as u64,
-                    rs.ceil() as u64,
-                ),
-                ndt: (1, 1),
-            }
-        } else {
-            let p = d / rs;
-            let ndt = |t: f64| ((t / d).ceil() as u64).saturating_sub(1).max(1);
-            Allowed {
-                nep: (1, 1),
-                ndt: (ndt(p.floor()), ndt(p.ceil())),
-            }
-        }
+        allowed(self.steps_per_dt(r), self.dt_cycles)
     }
 
-    /// The n1 = Nep1/Ndt1 (in steps per dt) of the allowed range for which eq. (4) and
-    /// eq. (13) are largest: both grow with n1 up to 1 and fall from 2 on, so it is the
-    /// smallest Nep1 at high speed and the smallest Ndt1 at low speed.
+    /// The worst n1 of the allowed range at r ω_lim ([`worst_n1`]).
     pub fn worst_n1(&self, r: f64) -> f64 {
-        let a = self.allowed(r);
-        if self.steps_per_dt(r) > 1.0 {
-            a.nep.0 as f64
-        } else {
-            1.0 / a.ndt.0 as f64
-        }
+        worst_n1(self.steps_per_dt(r), self.dt_cycles)
     }
 
     /// The computed bound on the relative error of `est` at a constant r ω_lim: the
-    /// estimator's own term at the step rate r_s = r·2^s, plus the output rounding
-    /// (½ LSB = 2^−(F+1) ω_lim, for n1 and n3 the mode scaling's
-    /// [`mode_scale_error_lsb`]) relative to r.
-    /// - PC: 1/r_s ([`pc_error_bound`]; `speed_pc` is exact, no rounding term).
-    /// - ET: 1/⌊P⌋ ([`et_error_bound`], P = dt/r_s cycles) + ½ LSB/r.
-    /// - M/T: [`mt_error_bound_at_speed`]`(r_s, dt)` + ½ LSB/r (windows with a step only).
-    /// - n3: [`n3_error_budget`] (eq. (13) + one clock cycle) at [`Setup::worst_n1`] +
-    ///   LSB/r.
-    /// - n1: the same with eq. (4): Er1 + (1 + Er1)/(dt − 1) + LSB/r.
+    /// estimator's own term at the step rate r_s = r·2^s ([`estimator_bound`]), plus the
+    /// output rounding relative to r: ½ LSB = 2^−(F+1) ω_lim for ET and M/T, for n1 and n3
+    /// the mode scaling's [`mode_scale_error_lsb`], none for PC (`speed_pc` is exact).
     pub fn bound(&self, est: Estimator, r: f64) -> f64 {
-        let rs = self.steps_per_dt(r);
-        let d = self.dt_cycles;
+        let own = estimator_bound(est, self.steps_per_dt(r), self.dt_cycles);
         let half_lsb = speed_lsb_error(SPEED_FRAC_BITS) / r;
         let scaled_lsb =
             mode_scale_error_lsb(self.shift()) * (-f64::from(SPEED_FRAC_BITS)).exp2() / r;
         match est {
-            Estimator::Pc => pc_error_bound(rs),
-            Estimator::Et => et_error_bound(self.step_period(r)) + half_lsb,
-            Estimator::Mt => mt_error_bound_at_speed(rs, d) + half_lsb,
-            Estimator::N3 => n3_error_budget(self.worst_n1(r), d) + scaled_lsb,
-            Estimator::N1 => {
-                let e = er1_max(self.worst_n1(r));
-                e + (1.0 + e) / (d as f64 - 1.0) + scaled_lsb
-            }
+            Estimator::Pc => own,
+            Estimator::Et | Estimator::Mt => own + half_lsb,
+            Estimator::N1 | Estimator::N3 => own + scaled_lsb,
         }
     }
 }

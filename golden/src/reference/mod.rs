@@ -9,6 +9,7 @@
 //! VCD with the model. The conventions (cycle 0, which value a row holds, how a VCD is
 //! sampled) are in docs/reference-model.md.
 
+pub mod bound;
 pub mod expected;
 pub mod stimulus;
 pub mod vcd_cycles;

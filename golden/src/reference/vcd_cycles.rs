@@ -191,6 +191,19 @@ impl<R: Read> VcdCycles<R> {
         scope: Option<&str>,
         map: &[(String, String)],
     ) -> Result<VcdCycles<R>, VcdError> {
+        Self::with_required(reader, inputs, outputs, scope, map, &REQUIRED_INPUTS)
+    }
+
+    /// [`VcdCycles::new`] with other inputs than [`REQUIRED_INPUTS`] required (and used to
+    /// find the scope): `check --mode bound` needs no `enc_z`.
+    pub fn with_required(
+        reader: R,
+        inputs: &[RefPort],
+        outputs: &[RefPort],
+        scope: Option<&str>,
+        map: &[(String, String)],
+        required: &[&str],
+    ) -> Result<VcdCycles<R>, VcdError> {
         let mut reader = BufReader::with_capacity(1 << 16, reader);
         let header = vcd::Parser::new(&mut reader)
             .parse_header()
@@ -206,7 +219,9 @@ impl<R: Read> VcdCycles<R> {
             let name = their_name(port);
             vars.iter().any(|v| v.reference == name)
         };
-        let needed: Vec<&str> = std::iter::once(CLOCK).chain(REQUIRED_INPUTS).collect();
+        let needed: Vec<&str> = std::iter::once(CLOCK)
+            .chain(required.iter().copied())
+            .collect();
         let (path, vars) = match scope {
             Some(s) => all.iter().find(|(p, _)| p == s).ok_or_else(|| {
                 VcdError(format!(
