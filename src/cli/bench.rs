@@ -4,6 +4,7 @@
 
 use clap::Args;
 use golden::params::Params;
+use golden::reference::bound::{check_bound, BoundOptions};
 use golden::reference::expected::{run_stimulus, VcdExpected};
 use golden::reference::stimulus::StimulusRow;
 use golden::reference::verdict::{check_exact, CheckOptions};
@@ -65,21 +66,25 @@ fn bench(p: &Params, cycles: u64) -> Outcome {
         verilator_rate
     );
     let check_cycles = cycles / 10;
-    let (check_rate, vcd_bytes) =
+    let (exact_rate, bound_rate, vcd_bytes) =
         check_rate(p, &inputs[..check_cycles as usize]).map_err(|e| (1, e))?;
     println!(
         "check --mode exact (VCD)     {:>12.0} cycles/s ({check_cycles} cycles, {:.0} MB VCD \
          of the ports)",
-        check_rate,
+        exact_rate,
         vcd_bytes as f64 / 1e6
+    );
+    println!(
+        "check --mode bound (VCD)     {:>12.0} cycles/s (the same VCD)",
+        bound_rate
     );
     Ok(())
 }
 
 /// `encspeed check`'s speed: the model's own VCD of `inputs` (every port of the core, as
-/// `encspeed vectors` writes it) under target/bench/, then the verdict on it timed. Cycles/s
-/// and the VCD's size.
-fn check_rate(p: &Params, inputs: &[CoreInputs]) -> Result<(f64, u64), String> {
+/// `encspeed vectors` writes it) under target/bench/, then the verdicts on it timed. Cycles/s
+/// of exact and bound mode, and the VCD's size.
+fn check_rate(p: &Params, inputs: &[CoreInputs]) -> Result<(f64, f64, u64), String> {
     let dir = tools::target_dir().join("bench");
     std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
     let path = dir.join("check.vcd");
@@ -115,5 +120,22 @@ fn check_rate(p: &Params, inputs: &[CoreInputs]) -> Result<(f64, u64), String> {
             v.mismatches
         ));
     }
-    Ok((rate, bytes))
+    let t = Instant::now();
+    let file = std::fs::File::open(&path).map_err(|e| e.to_string())?;
+    let options = BoundOptions {
+        scope: None,
+        map: Vec::new(),
+        frac_bits: golden::params::SPEED_FRAC_BITS,
+        latency: 0,
+        report: 0,
+    };
+    let b = check_bound(file, p, model.inputs(), model.outputs(), &options).map_err(|e| e.0)?;
+    let bound_rate = b.cycles as f64 / t.elapsed().as_secs_f64();
+    if b.violations() != 0 {
+        return Err(format!(
+            "check --mode bound found {} samples of the model outside their bounds",
+            b.violations()
+        ));
+    }
+    Ok((rate, bound_rate, bytes))
 }

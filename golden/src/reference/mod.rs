@@ -20,6 +20,7 @@ use crate::top::core::{CoreInputs, CoreModel, CoreOutputs};
 use crate::top::ecc_top::{check as check_ecc, EccTopInputs, EccTopModel, EccTopOutputs};
 use crate::top::port_fields::{
     from_port_bits, from_port_bits_unchecked, port_bits_into, signed_fields, to_port_bits,
+    PortFields,
 };
 use crate::top::ports::{core_ports, cycle_inputs, cycle_outputs, ecc_ports, Port};
 
@@ -53,8 +54,51 @@ impl RefTop {
 
 /// The model of one top, state included.
 enum Model {
-    Core(Box<CoreModel>),
-    Ecc(Box<EccTopModel>),
+    Core(Box<Cached<CoreModel, CoreInputs, CoreOutputs>>),
+    Ecc(Box<Cached<EccTopModel, EccTopInputs, EccTopOutputs>>),
+}
+
+/// A model with the conversions of its last step kept: a VCD's inputs and a model's
+/// outputs stay the same for most cycles, and converting them is most of a step's cost.
+struct Cached<M, I, O> {
+    model: M,
+    in_bits: Vec<u128>,
+    input: I,
+    output: Option<O>,
+}
+
+impl<M, I: PortFields + Copy, O: PortFields + Copy + PartialEq> Cached<M, I, O> {
+    fn new(model: M) -> Self {
+        Cached {
+            model,
+            in_bits: Vec::new(),
+            input: I::default(),
+            output: None,
+        }
+    }
+
+    /// One step of `step` on the inputs `bits`, its outputs into `out`; whether they
+    /// changed.
+    fn step(
+        &mut self,
+        bits: &[u128],
+        widths: (&[u32], &[u32]),
+        out: &mut Vec<u128>,
+        step: impl FnOnce(&mut M, I) -> O,
+    ) -> bool {
+        if self.in_bits != bits {
+            self.input = from_port_bits_unchecked(bits, widths.0);
+            self.in_bits.clear();
+            self.in_bits.extend_from_slice(bits);
+        }
+        let o = step(&mut self.model, self.input);
+        let changed = self.output != Some(o);
+        if changed {
+            port_bits_into(&o, widths.1, out);
+            self.output = Some(o);
+        }
+        changed
+    }
 }
 
 /// One port as the reference files carry it: its name and width, and whether its value is
@@ -146,6 +190,8 @@ pub struct Reference {
     output_widths: Vec<u32>,
     /// The outputs of the last step.
     last: Vec<u128>,
+    /// Whether the last step changed them (true after the first).
+    changed: bool,
 }
 
 impl Reference {
@@ -154,7 +200,7 @@ impl Reference {
     pub fn new(p: &Params, top: RefTop) -> Result<Reference, String> {
         let (model, ports, inputs_signed, outputs_signed) = match top {
             RefTop::Core => (
-                Model::Core(Box::new(CoreModel::new(p))),
+                Model::Core(Box::new(Cached::new(CoreModel::new(p)))),
                 core_ports(p.counter_bits()),
                 signed_fields::<CoreInputs>(),
                 signed_fields::<CoreOutputs>(),
@@ -162,7 +208,7 @@ impl Reference {
             RefTop::Ecc => {
                 check_ecc(p)?;
                 (
-                    Model::Ecc(Box::new(EccTopModel::new(p))),
+                    Model::Ecc(Box::new(Cached::new(EccTopModel::new(p)))),
                     ecc_ports(p.counter_bits()),
                     signed_fields::<EccTopInputs>(),
                     signed_fields::<EccTopOutputs>(),
@@ -198,7 +244,19 @@ impl Reference {
             input_widths: widths(&input_ports),
             output_widths: widths(&output_ports),
             last: Vec::with_capacity(output_ports.len()),
+            changed: true,
         })
+    }
+
+    /// The outputs of the last step (empty before the first).
+    pub fn last_outputs(&self) -> &[u128] {
+        &self.last
+    }
+
+    /// Whether the last step's outputs differ from the step's before it (true after the
+    /// first step).
+    pub fn outputs_changed(&self) -> bool {
+        self.changed
     }
 
     /// The top.
@@ -224,16 +282,11 @@ impl Reference {
 
     /// [`Self::step`] without allocating: the outputs stay valid until the next step.
     pub fn step_ref(&mut self, bits: &[u128]) -> &[u128] {
-        match &mut self.model {
-            Model::Core(m) => {
-                let i: CoreInputs = from_port_bits_unchecked(bits, &self.input_widths);
-                port_bits_into(&m.step(i), &self.output_widths, &mut self.last);
-            }
-            Model::Ecc(m) => {
-                let i: EccTopInputs = from_port_bits_unchecked(bits, &self.input_widths);
-                port_bits_into(&m.step(i), &self.output_widths, &mut self.last);
-            }
-        }
+        let widths = (&self.input_widths[..], &self.output_widths[..]);
+        self.changed = match &mut self.model {
+            Model::Core(m) => m.step(bits, widths, &mut self.last, |m, i| m.step(i)),
+            Model::Ecc(m) => m.step(bits, widths, &mut self.last, |m, i| m.step(i)),
+        };
         &self.last
     }
 }

@@ -16,7 +16,8 @@ use super::RefPort;
 use std::collections::HashMap;
 use std::fmt;
 use std::hash::{BuildHasherDefault, Hasher};
-use std::io::{self, BufRead, BufReader, Read};
+use std::io::{self, BufReader, Read};
+use std::ops::Range;
 
 /// The clock's port name.
 pub const CLOCK: &str = "clock";
@@ -55,51 +56,129 @@ pub struct VcdEdge {
     /// The outputs just before the edge (those the previous edge left): None where x or z
     /// or where the VCD does not have the output.
     pub outputs: Vec<Option<u128>>,
+    /// Whether any output differs from the previous edge's (true at the first edge).
+    pub outputs_changed: bool,
+    /// The reader and edge that filled this edge: a reader skips copying what has not
+    /// changed into the edge it filled last.
+    filled_by: Option<(u64, u64)>,
 }
 
-/// A whitespace-separated token scanner over a buffered reader.
+/// A whitespace-separated token scanner with its own buffer: a token is a range of the
+/// buffer, valid until the next call, so nothing is copied per token.
 struct Tokens<R: Read> {
     reader: BufReader<R>,
-    token: Vec<u8>,
+    buf: Vec<u8>,
+    /// The unread bytes are `buf[pos..end]`.
+    pos: usize,
+    end: usize,
 }
 
 impl<R: Read> Tokens<R> {
-    /// The next token, or None at the end of the file.
-    fn next(&mut self) -> io::Result<Option<&[u8]>> {
-        self.token.clear();
+    fn new(reader: BufReader<R>) -> Tokens<R> {
+        Tokens {
+            reader,
+            buf: vec![0; 1 << 16],
+            pos: 0,
+            end: 0,
+        }
+    }
+
+    /// Keeps the unread bytes, moved to the front, and reads more after them (the buffer
+    /// grows when a token fills it); false at the end of the file.
+    fn fill(&mut self) -> io::Result<bool> {
+        if self.pos > 0 {
+            self.buf.copy_within(self.pos..self.end, 0);
+            self.end -= self.pos;
+            self.pos = 0;
+        }
+        if self.end == self.buf.len() {
+            self.buf.resize(2 * self.buf.len(), 0);
+        }
         loop {
-            let buf = self.reader.fill_buf()?;
-            if buf.is_empty() {
+            match self.reader.read(&mut self.buf[self.end..]) {
+                Ok(n) => {
+                    self.end += n;
+                    return Ok(n > 0);
+                }
+                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(e),
+            }
+        }
+    }
+
+    /// The next token as a range of `buf`, or None at the end of the file.
+    fn next(&mut self) -> io::Result<Option<Range<usize>>> {
+        loop {
+            while self.pos < self.end && self.buf[self.pos].is_ascii_whitespace() {
+                self.pos += 1;
+            }
+            if self.pos < self.end {
                 break;
             }
-            // Skip the whitespace before the token, then take the bytes up to the next.
-            let start = if self.token.is_empty() {
-                match buf.iter().position(|b| !b.is_ascii_whitespace()) {
-                    Some(s) => s,
-                    None => {
-                        let n = buf.len();
-                        self.reader.consume(n);
-                        continue;
-                    }
-                }
-            } else {
-                0
-            };
-            match buf[start..].iter().position(|b| b.is_ascii_whitespace()) {
-                Some(len) => {
-                    self.token.extend_from_slice(&buf[start..start + len]);
-                    self.reader.consume(start + len + 1);
+            if !self.fill()? {
+                return Ok(None);
+            }
+        }
+        let mut len = 0;
+        loop {
+            let rest = &self.buf[self.pos + len..self.end];
+            match rest.iter().position(|b| b.is_ascii_whitespace()) {
+                Some(n) => {
+                    len += n;
                     break;
                 }
                 None => {
-                    self.token.extend_from_slice(&buf[start..]);
-                    let n = buf.len();
-                    self.reader.consume(n);
+                    len += rest.len();
+                    if !self.fill()? {
+                        break;
+                    }
                 }
             }
         }
-        Ok((!self.token.is_empty()).then_some(&self.token[..]))
+        let token = self.pos..self.pos + len;
+        self.pos += len;
+        Ok(Some(token))
     }
+}
+
+/// A value's bits, MSB first, `0 1 x z`: its number (x and z as 0) and whether any bit is
+/// x or z.
+fn parse_value(bits: &[u8]) -> Result<(u128, bool), VcdError> {
+    if bits.len() > 128 && bits[..bits.len() - 128].iter().any(|&b| b != b'0') {
+        return err(format!("a value of {} bits does not fit 128", bits.len()));
+    }
+    let mut value = 0u128;
+    let mut unknown = false;
+    for &b in bits {
+        value = value.wrapping_shl(1);
+        match b {
+            b'0' => {}
+            b'1' => value |= 1,
+            b'x' | b'X' | b'z' | b'Z' => unknown = true,
+            _ => {
+                return err(format!(
+                    "`{}` is not a VCD value",
+                    String::from_utf8_lossy(bits)
+                ))
+            }
+        }
+    }
+    Ok((if unknown { 0 } else { value }, unknown))
+}
+
+/// A timestamp's digits as a number (at most 19 digits: u64 holds every such number).
+fn parse_time(digits: &[u8]) -> Option<u64> {
+    if digits.is_empty() || digits.len() > 19 {
+        return None;
+    }
+    let mut t = 0u64;
+    for &d in digits {
+        if !d.is_ascii_digit() {
+            return None;
+        }
+        t = t * 10 + u64::from(d - b'0');
+    }
+    Some(t)
 }
 
 /// An identifier code as a number: its bytes in base 256, the last eight if it is longer
@@ -159,24 +238,33 @@ pub struct VcdCycles<R: Read> {
     /// The slots (index into the values) each identifier carries: one signal may carry
     /// several ports, and several signals of other scopes may share its identifier.
     ids: HashMap<u64, Vec<usize>, BuildHasherDefault<IdHasher>>,
+    /// The same for the one-character identifiers (VCD writers give those to their first
+    /// 94 signals): indexed by the character, no hashing.
+    short_ids: Vec<Vec<usize>>,
     inputs: Vec<RefPort>,
     defaulted: Vec<&'static str>,
     output_widths: Vec<Option<u32>>,
-    /// Values and their unknown flags: the clock, the inputs, the outputs.
+    /// The values at the end of the last closed timestamp (x and z as 0) and their unknown
+    /// flags: the clock, the inputs, the outputs.
     values: Vec<u128>,
     unknown: Vec<bool>,
-    /// For the slots the current timestamp changed (`changed`, listed in `touched`): their
-    /// values before it.
-    old_values: Vec<u128>,
-    old_unknown: Vec<bool>,
-    changed: Vec<bool>,
-    touched: Vec<usize>,
+    /// Inputs the VCD has that are x or z at the end of the last closed timestamp.
+    unknown_inputs: usize,
+    /// The changes of the current timestamp, applied when it closes: until then `values`
+    /// holds what an edge in it samples.
+    staged: Vec<(usize, u128, bool)>,
+    /// The outputs as an edge reports them, rebuilt only when `outputs_dirty` (an output
+    /// changed since the last edge).
+    outputs_view: Vec<Option<u128>>,
+    outputs_dirty: bool,
+    /// An input changed since the last edge.
+    inputs_dirty: bool,
+    /// This reader's number, distinct among the readers of a process (see
+    /// [`VcdEdge::filled_by`]).
+    reader: u64,
     time: Option<u64>,
     edges: u64,
     ended: bool,
-    /// Buffers of the scanner: the current token and a vector change's identifier.
-    token: Vec<u8>,
-    id: Vec<u8>,
 }
 
 impl<R: Read> VcdCycles<R> {
@@ -321,28 +409,32 @@ impl<R: Read> VcdCycles<R> {
             }
         }
         let n = 1 + inputs.len() + outputs.len();
+        let defaulted_count = defaulted.len();
         Ok(VcdCycles {
-            tokens: Tokens {
-                reader,
-                token: Vec::new(),
-            },
+            tokens: Tokens::new(reader),
             scope: path.clone(),
             timescale: header.timescale.unwrap_or((1, vcd::TimescaleUnit::S)),
+            short_ids: (0..128u64)
+                .map(|c| ids.get(&c).cloned().unwrap_or_default())
+                .collect(),
             ids,
             inputs: inputs.to_vec(),
             defaulted,
             output_widths,
             values: vec![0; n],
             unknown: vec![true; n],
-            old_values: vec![0; n],
-            old_unknown: vec![true; n],
-            changed: vec![false; n],
-            touched: Vec::new(),
+            unknown_inputs: inputs.len() - defaulted_count,
+            staged: Vec::new(),
+            outputs_view: Vec::new(),
+            outputs_dirty: true,
+            inputs_dirty: true,
+            reader: {
+                static READERS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+                READERS.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+            },
             time: None,
             edges: 0,
             ended: false,
-            token: Vec::new(),
-            id: Vec::new(),
         })
     }
 
@@ -378,101 +470,97 @@ impl<R: Read> VcdCycles<R> {
             .collect()
     }
 
-    /// Slot `k` as it was before the current timestamp: (value, unknown).
-    fn before(&self, k: usize) -> (u128, bool) {
-        if self.changed[k] {
-            (self.old_values[k], self.old_unknown[k])
-        } else {
-            (self.values[k], self.unknown[k])
-        }
-    }
-
-    /// Applies a value change of the signal `id`; `bits` MSB first, `0 1 x z`.
-    fn change(&mut self, bits: &[u8], id: &[u8]) -> Result<(), VcdError> {
-        let Some(slots) = self.ids.get(&id_number(id)) else {
-            return Ok(());
+    /// Stages a change of the signal `id` to (`value`, `unknown`).
+    fn change(&mut self, id: u64, value: u128, unknown: bool) {
+        let slots = match self.short_ids.get(id as usize) {
+            Some(slots) => slots,
+            None => match self.ids.get(&id) {
+                Some(slots) => slots,
+                None => return,
+            },
         };
-        let mut value = 0u128;
-        let mut unknown = false;
-        if bits.len() > 128 && bits[..bits.len() - 128].iter().any(|&b| b != b'0') {
-            return err(format!("a value of {} bits does not fit 128", bits.len()));
-        }
-        for &b in bits {
-            value = value.wrapping_shl(1);
-            match b {
-                b'0' => {}
-                b'1' => value |= 1,
-                b'x' | b'X' | b'z' | b'Z' => unknown = true,
-                _ => {
-                    return err(format!(
-                        "`{}` is not a VCD value",
-                        String::from_utf8_lossy(bits)
-                    ))
-                }
-            }
-        }
         for &k in slots {
-            if !self.changed[k] {
-                self.changed[k] = true;
-                self.touched.push(k);
-                self.old_values[k] = self.values[k];
-                self.old_unknown[k] = self.unknown[k];
-            }
-            self.values[k] = value;
-            self.unknown[k] = unknown;
+            self.staged.push((k, value, unknown));
         }
-        Ok(())
     }
 
-    /// Closes the current timestamp: true (and `edge` filled) if the clock rose in it.
+    /// Closes the current timestamp: true (and `edge` filled with the values before it) if
+    /// the clock rose in it; then applies its changes.
     fn close_timestamp(&mut self, edge: &mut VcdEdge) -> bool {
-        let rose = self.changed[0]
-            && self.old_values[0] == 0
-            && !self.old_unknown[0]
-            && self.values[0] == 1
-            && !self.unknown[0];
+        let clock = self.staged.iter().rev().find(|c| c.0 == 0);
+        let rose =
+            clock.is_some_and(|&(_, v, u)| v == 1 && !u) && self.values[0] == 0 && !self.unknown[0];
+        let n = self.inputs.len();
         if rose {
-            let n = self.inputs.len();
+            // An edge this reader filled at its last edge holds every value that has not
+            // changed since.
+            let current = self.edges > 0 && edge.filled_by == Some((self.reader, self.edges - 1));
+            edge.filled_by = Some((self.reader, self.edges));
             edge.cycle = self.edges;
             edge.time = self.time.unwrap_or(0);
-            edge.inputs.clear();
-            edge.unknown_input = None;
-            for k in 0..n {
-                let (v, u) = self.before(1 + k);
-                edge.inputs.push(if u { 0 } else { v });
-                if u && edge.unknown_input.is_none()
-                    && !self.defaulted.contains(&self.inputs[k].name)
-                {
-                    edge.unknown_input = Some(self.inputs[k].name);
+            if self.inputs_dirty || !current {
+                edge.inputs.clear();
+                edge.inputs.extend_from_slice(&self.values[1..1 + n]);
+            }
+            self.inputs_dirty = false;
+            edge.unknown_input = if self.unknown_inputs == 0 {
+                None
+            } else {
+                (0..n)
+                    .find(|&k| {
+                        self.unknown[1 + k] && !self.defaulted.contains(&self.inputs[k].name)
+                    })
+                    .map(|k| self.inputs[k].name)
+            };
+            if self.outputs_dirty {
+                self.outputs_view.clear();
+                let outputs = self.values[1 + n..].iter().zip(&self.unknown[1 + n..]);
+                for ((&v, &u), width) in outputs.zip(&self.output_widths) {
+                    self.outputs_view.push((!u && width.is_some()).then_some(v));
                 }
             }
-            edge.outputs.clear();
-            for (j, width) in self.output_widths.iter().enumerate() {
-                let (v, u) = self.before(1 + n + j);
-                edge.outputs.push((!u && width.is_some()).then_some(v));
+            if self.outputs_dirty || !current {
+                edge.outputs.clone_from(&self.outputs_view);
             }
+            edge.outputs_changed = self.outputs_dirty;
+            self.outputs_dirty = false;
             self.edges += 1;
         }
-        for &k in &self.touched {
-            self.changed[k] = false;
+        for &(k, v, u) in &self.staged {
+            if (1..=n).contains(&k) && u != self.unknown[k] {
+                if u {
+                    self.unknown_inputs += 1;
+                } else {
+                    self.unknown_inputs -= 1;
+                }
+            }
+            if (v, u) != (self.values[k], self.unknown[k]) {
+                if k > n {
+                    self.outputs_dirty = true;
+                } else if k > 0 {
+                    self.inputs_dirty = true;
+                }
+            }
+            self.values[k] = v;
+            self.unknown[k] = u;
         }
-        self.touched.clear();
+        self.staged.clear();
         rose
     }
 
-    /// The next token into `buf` (cleared first, its capacity kept); false at the end.
-    fn token_into(&mut self, buf: &mut Vec<u8>) -> Result<bool, VcdError> {
-        let t = self
-            .tokens
+    /// The next token's range in the scanner's buffer; None at the end of the file.
+    fn next_token(&mut self) -> Result<Option<Range<usize>>, VcdError> {
+        self.tokens
             .next()
-            .map_err(|e| VcdError(format!("reading the VCD: {e}")))?;
-        buf.clear();
-        match t {
-            Some(t) => {
-                buf.extend_from_slice(t);
-                Ok(true)
-            }
-            None => Ok(false),
+            .map_err(|e| VcdError(format!("reading the VCD: {e}")))
+    }
+
+    /// The next token, which must be there (the identifier of a vector change, a word
+    /// of a comment), as a range.
+    fn needed_token(&mut self, inside: &str) -> Result<Range<usize>, VcdError> {
+        match self.next_token()? {
+            Some(t) => Ok(t),
+            None => err(format!("the VCD ends inside {inside}")),
         }
     }
 
@@ -482,43 +570,33 @@ impl<R: Read> VcdCycles<R> {
         if self.ended {
             return Ok(false);
         }
-        let mut token = std::mem::take(&mut self.token);
-        let mut id = std::mem::take(&mut self.id);
-        let result = self.read_edge_with(edge, &mut token, &mut id);
-        (self.token, self.id) = (token, id);
+        let result = self.read_edge_inner(edge);
         if result.is_err() {
             self.ended = true;
         }
         result
     }
 
-    fn read_edge_with(
-        &mut self,
-        edge: &mut VcdEdge,
-        token: &mut Vec<u8>,
-        id: &mut Vec<u8>,
-    ) -> Result<bool, VcdError> {
+    fn read_edge_inner(&mut self, edge: &mut VcdEdge) -> Result<bool, VcdError> {
         loop {
-            if !self.token_into(token)? {
+            let Some(t) = self.next_token()? else {
                 self.ended = true;
                 return Ok(self.close_timestamp(edge));
-            }
+            };
+            let token = &self.tokens.buf[t.clone()];
             match token[0] {
                 b'#' => {
-                    let t: u64 = std::str::from_utf8(&token[1..])
-                        .ok()
-                        .and_then(|s| s.parse().ok())
-                        .ok_or_else(|| {
-                            VcdError(format!(
-                                "`{}` is not a timestamp",
-                                String::from_utf8_lossy(token)
-                            ))
-                        })?;
-                    if self.time.is_some_and(|old| t < old) {
-                        return err(format!("time goes back to {t}"));
+                    let Some(time) = parse_time(&token[1..]) else {
+                        return err(format!(
+                            "`{}` is not a timestamp",
+                            String::from_utf8_lossy(token)
+                        ));
+                    };
+                    if self.time.is_some_and(|old| time < old) {
+                        return err(format!("time goes back to {time}"));
                     }
                     let rose = self.close_timestamp(edge);
-                    self.time = Some(t);
+                    self.time = Some(time);
                     if rose {
                         return Ok(true);
                     }
@@ -527,27 +605,25 @@ impl<R: Read> VcdCycles<R> {
                     if token.len() < 2 {
                         return err("a scalar change without an identifier");
                     }
-                    self.change(&token[..1], &token[1..])?;
+                    let (value, unknown) = parse_value(&token[..1])?;
+                    let id = id_number(&token[1..]);
+                    self.change(id, value, unknown);
                 }
                 b'b' | b'B' => {
-                    if !self.token_into(id)? {
-                        return err("the VCD ends inside a value change");
-                    }
-                    self.change(&token[1..], id)?;
+                    let (value, unknown) = parse_value(&token[1..])?;
+                    let t = self.needed_token("a value change")?;
+                    let id = id_number(&self.tokens.buf[t]);
+                    self.change(id, value, unknown);
                 }
                 b'r' | b'R' | b's' | b'S' => {
                     // Real and string values: not ports of a top; skip the identifier.
-                    if !self.token_into(id)? {
-                        return err("the VCD ends inside a value change");
-                    }
+                    self.needed_token("a value change")?;
                 }
                 b'$' => {
-                    if token.as_slice() == b"$comment" {
+                    if token == b"$comment" {
                         loop {
-                            if !self.token_into(id)? {
-                                return err("the VCD ends inside a $comment");
-                            }
-                            if id.as_slice() == b"$end" {
+                            let t = self.needed_token("a $comment")?;
+                            if &self.tokens.buf[t] == b"$end" {
                                 break;
                             }
                         }
@@ -564,6 +640,73 @@ impl<R: Read> VcdCycles<R> {
                 }
             }
         }
+    }
+}
+
+/// Edges a reader thread hands over at a time in [`VcdCycles::each_edge_threaded`].
+const BATCH_EDGES: usize = 1024;
+
+impl<R: Read + Send> VcdCycles<R> {
+    /// Calls `each` on every edge, in order, while a thread of its own reads them: the scan
+    /// and the caller's work run on two cores. Stops at the first error of either (the
+    /// edges before a malformed place are all passed to `each` first); at the end, the
+    /// outputs after the last edge ([`Self::final_outputs`]).
+    pub fn each_edge_threaded(
+        self,
+        mut each: impl FnMut(&VcdEdge) -> Result<(), VcdError>,
+    ) -> Result<Vec<Option<u128>>, VcdError> {
+        use std::sync::mpsc::{channel, sync_channel};
+        type Batch = (Vec<VcdEdge>, usize, Option<VcdError>);
+        let (full_tx, full_rx) = sync_channel::<Batch>(2);
+        let (empty_tx, empty_rx) = channel::<Vec<VcdEdge>>();
+        for _ in 0..3 {
+            empty_tx
+                .send(vec![VcdEdge::default(); BATCH_EDGES])
+                .expect("the receiver is here");
+        }
+        std::thread::scope(|scope| {
+            let reader = scope.spawn(move || {
+                let mut this = self;
+                while let Ok(mut batch) = empty_rx.recv() {
+                    let (mut n, mut error) = (0, None);
+                    while n < BATCH_EDGES {
+                        match this.read_edge(&mut batch[n]) {
+                            Ok(true) => n += 1,
+                            Ok(false) => break,
+                            Err(e) => {
+                                error = Some(e);
+                                break;
+                            }
+                        }
+                    }
+                    let last = n < BATCH_EDGES;
+                    if full_tx.send((batch, n, error)).is_err() || last {
+                        break;
+                    }
+                }
+                this
+            });
+            let mut result = Ok(());
+            'batches: while let Ok((batch, n, error)) = full_rx.recv() {
+                for edge in &batch[..n] {
+                    if let Err(e) = each(edge) {
+                        result = Err(e);
+                        break 'batches;
+                    }
+                }
+                if let Some(e) = error {
+                    result = Err(e);
+                    break;
+                }
+                // The reader may have stopped already: a batch it does not take is dropped.
+                let _ = empty_tx.send(batch);
+            }
+            // Ends the reader if it still runs: its next send or receive fails.
+            drop(full_rx);
+            drop(empty_tx);
+            let this = reader.join().expect("the VCD reader thread does not panic");
+            result.map(|()| this.final_outputs())
+        })
     }
 }
 
@@ -618,10 +761,14 @@ mod tests {
         // The reset changes at the first edge's own timestamp: the edge samples the old 1.
         let e = edges(
             "#0\n$dumpvars\n0!\n1\"\n0#\n0$\n0%\nbx &\n$end\n#5\n1!\n0\"\nb0 &\n\
-             #10\n0!\n#15\n1!\nb101 &\n1#\n#20\n0!\n",
+             #10\n0!\n#15\n1!\nb101 &\n1#\n#20\n0!\n#25\n1!\n#30\n0!\n#35\n1!\n",
         )
         .unwrap();
-        assert_eq!(e.len(), 2);
+        assert_eq!(e.len(), 4);
+        assert_eq!(e[2].outputs, vec![Some(5)]);
+        assert_eq!(e[3].outputs, vec![Some(5)]);
+        let changed: Vec<bool> = e.iter().map(|e| e.outputs_changed).collect();
+        assert_eq!(changed, [true, true, true, false]);
         assert_eq!((e[0].cycle, e[0].time), (0, 5));
         assert_eq!(e[0].inputs, vec![1, 0, 0, 0, 0]);
         assert_eq!(e[0].outputs, vec![None], "x before the first edge");

@@ -60,13 +60,13 @@ pub struct Verdict {
 /// Compares the VCD `reader` with `model` (fresh, in its reset state) bit for bit. An
 /// unusable VCD is an error: malformed or truncated, no clock, a needed input missing or x
 /// after the first reset, an output of another width than the port, no reset.
-pub fn check_exact<R: Read>(
+pub fn check_exact<R: Read + Send>(
     reader: R,
     model: &mut Reference,
     options: &CheckOptions,
 ) -> Result<Verdict, VcdError> {
     let ports = model.outputs().to_vec();
-    let mut edges = VcdCycles::new(
+    let edges = VcdCycles::new(
         reader,
         model.inputs(),
         &ports,
@@ -107,14 +107,25 @@ pub fn check_exact<R: Read>(
             .collect(),
         defaulted_inputs: edges.defaulted_inputs(),
     };
-    let present: Vec<bool> = edges.output_widths().iter().map(|w| w.is_some()).collect();
-    let compare = |verdict: &mut Verdict,
-                   (cycle, time): (u64, u64),
-                   expected: &[u128],
-                   got: &[Option<u128>]| {
+    let present: Vec<usize> = (0..ports.len())
+        .filter(|&k| edges.output_widths()[k].is_some())
+        .collect();
+    // The comparison of an edge is that of the edge before when neither side changed and
+    // that one found no mismatch: most edges, at a few nanoseconds each.
+    let mut clean = false;
+    let mut compare = |verdict: &mut Verdict,
+                       (cycle, time): (u64, u64),
+                       expected: &[u128],
+                       got: &[Option<u128>],
+                       unchanged: bool| {
         verdict.cycles += 1;
-        for (k, port) in ports.iter().enumerate().filter(|(k, _)| present[*k]) {
-            verdict.values += 1;
+        verdict.values += present.len() as u64;
+        if unchanged && clean {
+            return;
+        }
+        let before = verdict.mismatches;
+        for &k in &present {
+            let port = &ports[k];
             if got[k] != Some(expected[k]) {
                 verdict.mismatches += 1;
                 if verdict.first.len() < options.report {
@@ -128,19 +139,21 @@ pub fn check_exact<R: Read>(
                 }
             }
         }
+        clean = verdict.mismatches == before;
     };
     let mut started = false;
     // The edge whose outputs are compared with the values before the next edge, and the
     // model's outputs after it.
     let mut pending: Option<(u64, u64)> = None;
     let mut expected: Vec<u128> = Vec::with_capacity(ports.len());
+    let mut expected_changed = true;
     let mut any_edge = false;
-    let mut edge = Default::default();
-    while edges.read_edge(&mut edge)? {
-        let edge = &edge;
+    let timescale = verdict.timescale.clone();
+    let final_outputs = edges.each_edge_threaded(|edge| {
         any_edge = true;
         if let Some(at) = pending.take() {
-            compare(&mut verdict, at, &expected, &edge.outputs);
+            let unchanged = !expected_changed && !edge.outputs_changed;
+            compare(&mut verdict, at, &expected, &edge.outputs, unchanged);
         }
         if !started && edge.inputs[reset] == 1 {
             started = true;
@@ -149,19 +162,23 @@ pub fn check_exact<R: Read>(
         if started {
             if let Some(name) = edge.unknown_input {
                 return Err(VcdError(format!(
-                    "input {name} is x or z at the rising edge {} (time {}{}) after the first \
-                     reset",
-                    edge.cycle, edge.time, verdict.timescale
+                    "input {name} is x or z at the rising edge {} (time {}{timescale}) after \
+                     the first reset",
+                    edge.cycle, edge.time
                 )));
             }
         }
-        let outputs = model.step_ref(&edge.inputs);
+        model.step_ref(&edge.inputs);
         if started {
-            expected.clear();
-            expected.extend_from_slice(outputs);
+            expected_changed = model.outputs_changed() || expected.is_empty();
+            if expected_changed {
+                expected.clear();
+                expected.extend_from_slice(model.last_outputs());
+            }
             pending = Some((edge.cycle, edge.time));
         }
-    }
+        Ok(())
+    })?;
     if !any_edge {
         return Err(VcdError("the clock never rises in the VCD".into()));
     }
@@ -171,7 +188,7 @@ pub fn check_exact<R: Read>(
         ));
     }
     if let Some(at) = pending.take() {
-        compare(&mut verdict, at, &expected, &edges.final_outputs());
+        compare(&mut verdict, at, &expected, &final_outputs, false);
     }
     Ok(verdict)
 }
