@@ -228,6 +228,31 @@ fn vectors_are_what_verilator_gives_and_check_passes_its_vcd_and_finds_a_wrong_c
         assert!(judged(&t, port) > 0, "{port} never judged: {t}");
     }
 
+    // One bit of one output flipped: exit 1, naming that port (the lowest bit of the first
+    // value change of speed_pc in the second half of the file, until its next change).
+    let vcd = std::fs::read_to_string(path("verilator.vcd")).unwrap();
+    let code = vcd
+        .lines()
+        .find_map(|l| {
+            let w: Vec<&str> = l.split_whitespace().collect();
+            (w.len() >= 5 && w[0] == "$var" && w[4] == "speed_pc").then(|| w[3].to_string())
+        })
+        .unwrap();
+    let from = vcd.len() / 2;
+    let at = from
+        + vcd[from..]
+            .find(&format!(" {code}\n"))
+            .expect("speed_pc changes in the second half");
+    let bit = vcd[..at].rfind(['0', '1']).unwrap();
+    let mut flipped = vcd.clone().into_bytes();
+    flipped[bit] = if flipped[bit] == b'0' { b'1' } else { b'0' };
+    std::fs::write(path("flipped.vcd"), flipped).unwrap();
+    let o = encspeed(&["check", "--vcd", &path("flipped.vcd")]);
+    let t = text(&o);
+    assert_eq!(o.status.code(), Some(1), "{t}");
+    assert!(t.contains("FAIL: ") && t.contains("speed_pc"), "{t}");
+    println!("{t}");
+
     // A core built for another dt is not this one: exit 1 with the first mismatches.
     let o = encspeed(&[
         "check",
