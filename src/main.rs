@@ -27,10 +27,10 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Cmd {
-    /// Emit encspeed_core.v and its manifest encspeed_core.toml, encspeed_wb.v and
-    /// encspeed_regs.h; for a multiple of 4 lines also encspeed_ecc.v (the core with the
-    /// eccentricity-corrected speeds and identification), encspeed_ecc_wb.v (that behind
-    /// Wishbone) and encspeed_ecc_regs.h.
+    /// Emit encspeed_core.v, encspeed_wb.v (the core behind Wishbone, with encspeed_regs.h)
+    /// and, for a multiple of 4 lines, encspeed_ecc.v (the core with the eccentricity-corrected
+    /// speeds and identification) and encspeed_ecc_wb.v (with encspeed_ecc_regs.h); each top
+    /// with its manifest (.toml), instantiation template (_inst.v) and lint waivers (.vlt).
     Generate(generate::GenerateArgs),
     /// Run a scenario through the rust-hdl design, check it against the golden model on every
     /// cycle, and write a VCD of every signal.

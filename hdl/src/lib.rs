@@ -54,6 +54,7 @@ pub use ecc::n3_corrector::N3Corrector;
 pub use ecc::sine_rom::{sine_rom_verilog, SineRom};
 pub use ecc::span_delta::SpanDelta;
 pub use ecc::table_rom::TableRom;
+pub use emit::prefix::Prefix;
 pub use emit::tops::Top;
 pub use emit::wb::emit_wb;
 pub use emit::{emit_core, emit_ecc, EmitInfo};

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
-//! `encspeed generate`: write encspeed_core.v and its manifest encspeed_core.toml,
-//! encspeed_wb.v and encspeed_regs.h, and for a multiple of 4 lines also encspeed_ecc.v,
-//! encspeed_ecc_wb.v and encspeed_ecc_regs.h.
+//! `encspeed generate`: write every file of every shipped top (`hdl::Top::ALL`): for each
+//! top its Verilog, manifest (`.toml`), instantiation template (`_inst.v`) and Verilator
+//! waivers (`.vlt`), and the C headers of the Wishbone tops; the eccentricity tops only for a
+//! multiple of 4 lines. `--prefix` renames every module, macro and file (`hdl::Prefix`).
 
 use clap::Args;
 use golden::params::Params;
-use hdl::Top;
+use hdl::{Prefix, Top};
 use std::path::{Path, PathBuf};
 
 use super::spec::SpecArgs;
@@ -19,17 +20,23 @@ pub struct GenerateArgs {
     /// Output directory.
     #[arg(long, default_value = "generated")]
     out: PathBuf,
+    /// Put this in front of every module name, C macro and file name, so that several
+    /// configurations load into one design (e.g. acme_: module acme_encspeed_core in
+    /// acme_encspeed_core.v, macros ACME_ENCSPEED_*).
+    #[arg(long, default_value = "")]
+    prefix: String,
 }
 
 /// `encspeed generate`.
 pub fn run(args: &GenerateArgs) -> Outcome {
-    args.spec.run(|p| generate(p, &args.out))
+    let prefix = Prefix::new(&args.prefix).map_err(|e| (2, e))?;
+    args.spec.run(|p| generate(p, &prefix, &args.out))
 }
 
 /// Every file of every shipped top ([`hdl::Top::ALL`]) into `out`. A top the parameters
 /// cannot have (the eccentricity tops need a multiple of 4 lines) is reported on stderr
 /// and the others are written.
-fn generate(p: &Params, out: &Path) -> Outcome {
+fn generate(p: &Params, prefix: &Prefix, out: &Path) -> Outcome {
     let write = |name: &str, text: &str| {
         std::fs::create_dir_all(out)
             .and_then(|_| std::fs::write(out.join(name), text))
@@ -38,14 +45,14 @@ fn generate(p: &Params, out: &Path) -> Outcome {
     let mut written = Vec::new();
     let mut refused: Vec<(String, String)> = Vec::new();
     for top in Top::ALL {
-        match top.files(p) {
+        match top.files_prefixed(p, prefix) {
             Ok(files) => {
                 for (name, text) in files {
                     write(&name, &text)?;
                     written.push(out.join(name).display().to_string());
                 }
             }
-            Err(why) => refused.push((top.verilog_file(), why)),
+            Err(why) => refused.push((prefix.file_name(&top.verilog_file()), why)),
         }
     }
     if let Some((_, why)) = refused.first() {

@@ -26,15 +26,15 @@
 //! 2 cycles; 10 000 keeps a margin and round numbers. The slowest point then has one line
 //! per 100 dt = 1 s = 10⁶ cycles, and the run still sees six of its estimates.
 
-use golden::estimator::bounds::{allowed, er3_max, estimator_bound, worst_n1};
+use golden::estimator::bounds::{allowed, er3_max, worst_n1};
 pub use golden::estimator::bounds::{Allowed, Estimator};
-use golden::estimator::speed_calc::speed_lsb_error;
 use golden::ideal::fixed_space;
 use golden::ideal::plant::{
     edges, initial_levels, Channel, ClockSampler, Disc, Edge, Profile, Segment,
 };
 use golden::params::{Params, Spec, SPEED_FRAC_BITS};
-use golden::top::core::{mode_scale_error_lsb, mode_shift, CoreInputs, CoreModel};
+use golden::top::core::{mode_shift, CoreInputs, CoreModel};
+use golden::top::error_budget::output_bound;
 use plotters::prelude::*;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -146,20 +146,11 @@ impl Setup {
         worst_n1(self.steps_per_dt(r), self.dt_cycles)
     }
 
-    /// The computed bound on the relative error of `est` at a constant r ω_lim: the
-    /// estimator's own term at the step rate r_s = r·2^s ([`estimator_bound`]), plus the
-    /// output rounding relative to r: ½ LSB = 2^−(F+1) ω_lim for ET and M/T, for n1 and n3
-    /// the mode scaling's [`mode_scale_error_lsb`], none for PC (`speed_pc` is exact).
+    /// The computed bound on the relative error of `est` at a constant r ω_lim in this
+    /// decode mode ([`output_bound`]: the estimator's own term, the clock and the output
+    /// rounding), the figure the manifests' error budget tables give.
     pub fn bound(&self, est: Estimator, r: f64) -> f64 {
-        let own = estimator_bound(est, self.steps_per_dt(r), self.dt_cycles);
-        let half_lsb = speed_lsb_error(SPEED_FRAC_BITS) / r;
-        let scaled_lsb =
-            mode_scale_error_lsb(self.shift()) * (-f64::from(SPEED_FRAC_BITS)).exp2() / r;
-        match est {
-            Estimator::Pc => own,
-            Estimator::Et | Estimator::Mt => own + half_lsb,
-            Estimator::N1 | Estimator::N3 => own + scaled_lsb,
-        }
+        output_bound(est, r, self.shift(), self.dt_cycles, SPEED_FRAC_BITS)
     }
 }
 

@@ -19,23 +19,9 @@ use hdl::sim::ecc_sim::ECC_TOP_MODULE as MODULE;
 /// The event mode (`--events`).
 const EVENTS: &str = include_str!("../verilator/ecc_events.cpp");
 
-/// The waivers for `encspeed_ecc.v`: the core's, retargeted (the top contains the core
-/// unchanged), the file-name rule for the top's sub-modules, and WIDTH for the masks that
-/// rust-hdl's `bit_cast` emits (`x & 33'h1ffffffff` to widen, `(y & 32'hffffffff)` assigned
-/// to narrow: Verilog zero-extends and truncates exactly as the cast means).
+/// The waivers of `encspeed_ecc.v`, as shipped in `generated/encspeed_ecc.vlt`.
 pub fn waivers() -> String {
-    waivers_for(MODULE)
-}
-
-/// The waivers of [`waivers`] for a top `module` that contains `encspeed_ecc` (as
-/// `encspeed_ecc_wb` does), retargeted to `module.v`.
-pub fn waivers_for(module: &str) -> String {
-    format!(
-        "{}\nlint_off -rule DECLFILENAME -file \"*{module}.v\"\n\
-         lint_off -rule WIDTH -file \"*{module}.v\" -match \"*Operator AND expects*\"\n\
-         lint_off -rule WIDTH -file \"*{module}.v\" -match \"*Assign RHS's AND generates*\"\n",
-        crate::verilator::WAIVERS.replace("*encspeed_core.v", &format!("*{module}.v"))
-    )
+    hdl::Top::Ecc.waivers()
 }
 
 /// A compiled simulator of one emitted `encspeed_ecc`.

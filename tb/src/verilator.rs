@@ -16,7 +16,6 @@
 //! error, never a skip: `.ci/run` installs it.
 
 use golden::top::core::{CoreInputs, CoreOutputs};
-use golden::top::ecc_wb_top::ECC_WB_TOP_MODULE;
 use golden::top::port_fields::{from_port_bits, to_port_bits, PortFields};
 use golden::top::ports::{core_ports, cycle_inputs, cycle_outputs, Port};
 use golden::top::wb_top::{wb_top_ports, WbTopInputs, WbTopOutputs, TOP_MODULE as WB_MODULE};
@@ -30,12 +29,9 @@ use std::process::{Command, Stdio};
 const STREAM_MAIN: &str = include_str!("../verilator/stream_main.cpp");
 /// `encspeed_core`'s bench mode (`--bench`).
 const CORE_BENCH: &str = include_str!("../verilator/core_bench.cpp");
-/// Lint waivers for the emitted Verilog (each one explained in the file).
-pub const WAIVERS: &str = include_str!("../verilator/waivers.vlt");
-/// `encspeed_wb`'s own lint waivers (each one explained in the file).
-pub const WB_WAIVERS: &str = include_str!("../verilator/wb_waivers.vlt");
-/// `encspeed_ecc_wb`'s own lint waivers (each one explained in the file).
-pub const ECC_WB_WAIVERS: &str = include_str!("../verilator/ecc_wb_waivers.vlt");
+/// Lint waivers of `encspeed_core.v`, as shipped in `generated/encspeed_core.vlt` (each
+/// one explained in `hdl/src/emit/lint/`).
+pub const WAIVERS: &str = hdl::emit::waivers::CORE;
 
 /// Numbers one port's value takes in a harness line: one, or for a port wider than 64 bits
 /// its 32-bit words, least significant first (as Verilator stores it).
@@ -380,25 +376,14 @@ impl Verilated {
 /// (`encspeed_ecc_wb`).
 pub type VerilatedWb = Simulator<WbTopInputs, WbTopOutputs>;
 
-/// The waivers that apply to `encspeed_wb.v`: the core's ([`WAIVERS`]), retargeted from
-/// `encspeed_core.v` to this file (the top contains the core unchanged, so the same block
-/// outputs are unused under the same names), then the top's own.
+/// The waivers of `encspeed_wb.v`, as shipped in `generated/encspeed_wb.vlt`.
 pub fn wb_waivers() -> String {
-    format!(
-        "{}\n// ---- encspeed_wb's own (wb_waivers.vlt) ----\n{}",
-        WAIVERS.replace("*encspeed_core.v", "*encspeed_wb.v"),
-        WB_WAIVERS.trim_start_matches("`verilator_config")
-    )
+    hdl::Top::Wb.waivers()
 }
 
-/// The waivers of `encspeed_ecc_wb.v`: `encspeed_ecc`'s
-/// ([`crate::ecc_verilator::waivers_for`]) and the top's own (`ecc_wb_waivers.vlt`).
+/// The waivers of `encspeed_ecc_wb.v`, as shipped in `generated/encspeed_ecc_wb.vlt`.
 pub fn ecc_wb_waivers() -> String {
-    format!(
-        "{}\n// ---- encspeed_ecc_wb's own (ecc_wb_waivers.vlt) ----\n{}",
-        crate::ecc_verilator::waivers_for(ECC_WB_TOP_MODULE),
-        ECC_WB_WAIVERS.trim_start_matches("`verilator_config")
-    )
+    hdl::Top::EccWb.waivers()
 }
 
 /// `verilator --lint-only -Wall` on `encspeed_wb.v` with the documented waivers; Ok on a

@@ -5,14 +5,17 @@
 //! for them (no dates, no paths of this machine), so `generated/` can be checked for
 //! staleness byte for byte.
 
+pub mod inst;
+pub mod manifest;
+pub mod prefix;
 pub mod tops;
+pub mod waivers;
 pub mod wb;
 
 use crate::sim::core_sim::build_core;
-use golden::params::{Params, Spec};
+use golden::params::Params;
 use golden::provenance::{preamble, Comment, DOCS_COMMAND};
 use golden::top::ports::{core_ports, Latency, Port};
-use serde::Serialize;
 
 /// Name of the top module in the emitted Verilog.
 pub const TOP_MODULE: &str = "encspeed_core";
@@ -26,44 +29,6 @@ pub struct EmitInfo {
     pub verilog: String,
     /// `encspeed_core.toml`.
     pub manifest: String,
-}
-
-#[derive(Serialize)]
-struct Manifest<'a> {
-    /// Fractional bits of every speed output: value = raw · 2^−speed_frac_bits ω_lim.
-    speed_frac_bits: u32,
-    /// Width of every speed output (two's complement).
-    speed_bits: u32,
-    generator: Generator<'a>,
-    spec: &'a Spec,
-    derived: Derived,
-    ports: Vec<Port>,
-}
-
-#[derive(Serialize)]
-struct Generator<'a> {
-    tool: String,
-    rust_hdl: &'static str,
-    command: &'a str,
-    top_module: &'static str,
-}
-
-#[derive(Serialize)]
-struct Derived {
-    /// ts, s.
-    ts_s: f64,
-    /// Nominal dt, s.
-    dt_s: f64,
-    /// ω_lim at the nominal dt, rev/s.
-    omega_lim_rps: f64,
-    /// Saturation value of every counter.
-    counter_max: u64,
-    /// `stalled` threshold, dt intervals.
-    timeout_dt: u64,
-    /// ω_lim at the nominal dt, rad/s.
-    omega_lim_rad_s: f64,
-    /// Latencies with the filter off (cfg_filter = 0), clock cycles.
-    latency: Latency,
 }
 
 /// The `encspeed` command line that regenerates the files for `p` (every parameter given
@@ -128,8 +93,6 @@ fn header(module: &str, p: &Params, function: &str, extra: &[String], ports: &[P
 
 /// Emit the core and its manifest for `p`.
 pub fn emit_core(p: &Params) -> EmitInfo {
-    let command = &regenerate_command(p);
-    let tool = format!("encspeed {}", env!("CARGO_PKG_VERSION"));
     let body = build_core(p).verilog(TOP_MODULE);
     let header = header(
         TOP_MODULE,
@@ -138,31 +101,9 @@ pub fn emit_core(p: &Params) -> EmitInfo {
         &[],
         &core_ports(p.counter_bits()),
     );
-    let manifest = Manifest {
-        speed_frac_bits: p.speed_frac_bits(),
-        speed_bits: p.speed_bits(),
-        generator: Generator {
-            tool,
-            rust_hdl: RUST_HDL_VERSION,
-            command,
-            top_module: TOP_MODULE,
-        },
-        spec: p.spec(),
-        derived: Derived {
-            ts_s: p.ts_s(),
-            dt_s: p.dt_s(),
-            omega_lim_rps: p.omega_lim_rps(),
-            counter_max: p.counter_max(),
-            timeout_dt: p.timeout_dt(),
-            omega_lim_rad_s: p.omega_lim_rps() * std::f64::consts::TAU,
-            latency: Latency::new(p, 0),
-        },
-        ports: core_ports(p.counter_bits()),
-    };
     EmitInfo {
         verilog: format!("{header}\n{body}"),
-        manifest: preamble(Comment::Hash, &regenerate_command(p))
-            + &toml::to_string(&manifest).expect("manifest serialises"),
+        manifest: manifest::manifest(tops::Top::Core, p),
     }
 }
 

@@ -5,7 +5,10 @@
 //! A new top is added here (its module, its files, whether it needs the eccentricity
 //! corrector's parameters) and every command and test that walks [`Top::ALL`] takes it up.
 
+use super::prefix::Prefix;
 use golden::params::Params;
+use golden::provenance::{generate_command, preamble, Comment};
+use golden::top::ports::Port;
 
 /// One shipped top-level module and the files generated with it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -58,24 +61,85 @@ impl Top {
         }
     }
 
-    /// Every file of this top for `p` as (file name, contents), the Verilog first.
-    /// Deterministic: a pure function of `p`. An error where [`Top::check`] refuses `p`.
+    /// Every port of this top, in the order of its Verilog module header.
+    pub fn ports(self, p: &Params) -> Vec<Port> {
+        match self {
+            Top::Core => golden::top::ports::core_ports(p.counter_bits()),
+            Top::Wb | Top::EccWb => golden::top::wb_top::wb_top_ports(),
+            Top::Ecc => golden::top::ports::ecc_ports(p.counter_bits()),
+        }
+    }
+
+    /// The Verilator lint waivers of this top ([`super::waivers::waivers`]), the text of
+    /// `<module>.vlt` after its first two comment lines.
+    pub fn waivers(self) -> String {
+        super::waivers::waivers(self)
+    }
+
+    /// Every file of this top for `p` as (file name, contents), the Verilog first, then
+    /// its other files in this order: the C header (bus tops), the manifest
+    /// `<module>.toml`, the instantiation template `<module>_inst.v` and the lint waivers
+    /// `<module>.vlt`. Deterministic: a pure function of `p`. An error where [`Top::check`]
+    /// refuses `p`.
     pub fn files(self, p: &Params) -> Result<Vec<(String, String)>, String> {
+        self.files_prefixed(p, &Prefix::none())
+    }
+
+    /// [`Top::files`] with every generated name carrying `prefix` ([`Prefix::apply`]).
+    pub fn files_prefixed(
+        self,
+        p: &Params,
+        prefix: &Prefix,
+    ) -> Result<Vec<(String, String)>, String> {
+        self.check(p)?;
         let named = |v: Vec<(&'static str, String)>| -> Vec<(String, String)> {
             v.into_iter().map(|(n, t)| (n.to_string(), t)).collect()
         };
-        Ok(match self {
-            Top::Core => {
-                let e = super::emit_core(p);
-                vec![
-                    (self.verilog_file(), e.verilog),
-                    (format!("{}.toml", self.module()), e.manifest),
-                ]
-            }
+        let command = generate_command(p);
+        let module = self.module();
+        let mut files = match self {
+            Top::Core => vec![(self.verilog_file(), super::emit_core(p).verilog)],
             Top::Wb => named(super::wb::emit_wb(p)),
             Top::Ecc => vec![(self.verilog_file(), super::emit_ecc(p)?)],
             Top::EccWb => named(super::wb::emit_ecc_wb(p)?),
-        })
+        };
+        files.push((format!("{module}.toml"), super::manifest::manifest(self, p)));
+        files.push((
+            format!("{module}_inst.v"),
+            super::inst::template(module, &self.ports(p), &command, &self.connect_notes(p)),
+        ));
+        files.push((
+            format!("{module}.vlt"),
+            preamble(Comment::Slashes, &command) + &self.waivers(),
+        ));
+        Ok(files
+            .into_iter()
+            .map(|(name, text)| (prefix.file_name(&name), prefix.apply(&text, &command)))
+            .collect())
+    }
+
+    /// What the instantiation template says about connecting this top.
+    fn connect_notes(self, p: &Params) -> Vec<String> {
+        let mut notes = vec![
+            format!(
+                "Generated for clock_hz = {}, lines = {}, dt_cycles = {}, counter_bits = {}, timeout_s = {}: see {}.toml for the latencies and the error budget.",
+                p.clock_hz(),
+                p.lines(),
+                p.dt_cycles(),
+                p.counter_bits(),
+                p.spec().timeout_s,
+                self.module()
+            ),
+            "enc_a, enc_b, enc_z may be asynchronous (synchronised inside by two flip-flops); every other port is synchronous to the rising edge of clock; reset is synchronous and active high.".into(),
+        ];
+        notes.push(match self {
+            Top::Core | Top::Ecc => "cfg_* are sampled at every edge: tie them to constants or drive them from registers (0 on cfg_dt and cfg_timeout selects the generated defaults).".into(),
+            Top::Wb | Top::EccWb => format!(
+                "The configuration is in registers: see {} and docs/registers.md.",
+                super::wb::HEADER_FILE
+            ),
+        });
+        notes
     }
 
     /// The Verilog of this top for `p` (the first of [`Top::files`]).

@@ -136,22 +136,15 @@ mod tests {
         yosys_validate("encspeed_wb", &v).unwrap();
     }
 
-    /// `verilator --lint-only -Wall` on the emitted top with the core's waivers
-    /// (tb/verilator/waivers.vlt, retargeted to this file) and the top's own
-    /// (tb/verilator/wb_waivers.vlt): any other warning fails.
+    /// `verilator --lint-only -Wall` on the emitted top with its shipped waivers
+    /// ([`crate::Top::waivers`]): any other warning fails.
     #[test]
     fn verilator_lint_is_clean_with_the_documented_waivers() {
-        let core = include_str!("../../../tb/verilator/waivers.vlt");
-        let top = include_str!("../../../tb/verilator/wb_waivers.vlt");
+        let waivers = crate::Top::Wb.waivers();
         for p in [small(), Params::new(Spec::default()).unwrap()] {
             let v = build_wb(&p).verilog("encspeed_wb");
             let dir = tools::work_dir("block_lint", &format!("encspeed_wb-{}", p.counter_bits()))
                 .unwrap();
-            let waivers = format!(
-                "{}\n{}",
-                core.replace("*encspeed_core.v", "*encspeed_wb.v"),
-                top.trim_start_matches("`verilator_config")
-            );
             tools::stage(&dir, &[("encspeed_wb.v", &v), ("waivers.vlt", &waivers)]).unwrap();
             tools::verilator_lint(&dir, "encspeed_wb", &["waivers.vlt", "encspeed_wb.v"]).unwrap();
         }

@@ -27,7 +27,7 @@ pub fn lint_with_waivers(top: &str, verilog: &str, waivers: &[(&str, &str)]) {
 }
 
 /// The waivers of the correctors' Verilog, as for the shipped `encspeed_ecc`
-/// (`tb::ecc_verilator::waivers_for`): rust-hdl's `bit_cast` masks its operand at the
+/// (`hdl/src/emit/lint/ecc.vlt`): rust-hdl's `bit_cast` masks its operand at the
 /// target width (`count & 64'hff…ff` on a narrower `count`: WIDTH), and the correctors
 /// sequence their arithmetic blocks from their own state, never reading a block's `busy`.
 pub const CORRECTOR_WAIVERS: &[(&str, &str)] = &[

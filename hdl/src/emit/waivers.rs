@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
+//! The Verilator lint waivers of each shipped top (`generated/<top>.vlt`): with them,
+//! `verilator --lint-only -Wall <top>.vlt <top>.v` is clean. The tests lint and build every
+//! top with exactly this text, so the shipped file is the one that was tested.
+//!
+//! Each source file in `lint/` explains each of its waivers. A top that contains another
+//! carries the waivers of what it contains, retargeted to its own file: `encspeed_wb` those
+//! of the core, `encspeed_ecc` the core's, `encspeed_ecc_wb` `encspeed_ecc`'s.
+
+use super::tops::Top;
+
+/// `encspeed_core.v`'s waivers.
+pub const CORE: &str = include_str!("lint/core.vlt");
+/// What `encspeed_wb.v` adds.
+const WB: &str = include_str!("lint/wb.vlt");
+/// What `encspeed_ecc.v` adds.
+const ECC: &str = include_str!("lint/ecc.vlt");
+/// What `encspeed_ecc_wb.v` adds.
+const ECC_WB: &str = include_str!("lint/ecc_wb.vlt");
+
+/// The waivers of `top`: a Verilator configuration file (it starts with
+/// `` `verilator_config ``), every section retargeted to `<module>.v`.
+pub fn waivers(top: Top) -> String {
+    let (sources, from): (&[&str], &str) = match top {
+        Top::Core => (&[CORE], "encspeed_core.v"),
+        Top::Wb => (&[CORE, WB], "encspeed_wb.v"),
+        Top::Ecc => (&[CORE, ECC], "encspeed_ecc.v"),
+        Top::EccWb => (&[CORE, ECC, ECC_WB], "encspeed_ecc_wb.v"),
+    };
+    let to = format!("\"*{}\"", top.verilog_file());
+    let mut text = String::from("`verilator_config\n");
+    for source in sources {
+        // Drop each source's own SPDX and `verilator_config lines: the file has one of each.
+        let body: String = source
+            .lines()
+            .skip_while(|l| l.contains("SPDX-License-Identifier") || l.starts_with('`'))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        text.push_str(
+            &body
+                .replace("\"*encspeed_core.v\"", &to)
+                .replace("\"*encspeed_ecc.v\"", &to)
+                .replace(&format!("\"*{from}\""), &to),
+        );
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every waiver of a top names that top's file and no other.
+    #[test]
+    fn each_top_waives_only_its_own_file() {
+        for top in Top::ALL {
+            let w = waivers(top);
+            assert!(w.starts_with("`verilator_config\n"));
+            assert_eq!(w.matches("`verilator_config").count(), 1, "{top:?}");
+            let rules: Vec<&str> = w.lines().filter(|l| l.starts_with("lint_off")).collect();
+            assert!(!rules.is_empty());
+            for rule in rules {
+                assert!(
+                    rule.contains(&format!("-file \"*{}\"", top.verilog_file())),
+                    "{top:?}: {rule}"
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,319 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
+//! The IP as a user takes it (docs/integration.md): every shipped top lints clean with its
+//! shipped waivers; two configurations generated with
+//! `--prefix` load into one design in Verilator (lint clean with their shipped waivers) and in
+//! yosys, where two unprefixed ones collide; every top's instantiation template compiles
+//! against its module in Icarus with every port at its width; two prefixed C headers
+//! compile into one C file; every manifest carries the ports, the latencies and the error
+//! budget.
+
+use golden::params::{Params, Spec};
+use golden::top::ports::Port;
+use hdl::{Prefix, Top};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The default configuration (24-bit counters, 1024 lines).
+fn default_params() -> Params {
+    Params::new(Spec::default()).unwrap()
+}
+
+/// A second configuration with other port widths (10-bit counters, 16 lines), so a
+/// module of one loaded in place of the other's would not fit its ports.
+fn small_params() -> Params {
+    Params::new(Spec {
+        lines: 16,
+        counter_bits: 10,
+        dt_cycles: 200,
+        clock_hz: 1e6,
+        timeout_s: 0.1,
+    })
+    .unwrap()
+}
+
+fn generated(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../generated")
+        .join(name)
+}
+
+/// `[w-1:0] ` or nothing for one bit.
+fn range(port: &Port) -> String {
+    if port.width == 1 {
+        String::new()
+    } else {
+        format!("[{}:0] ", port.width - 1)
+    }
+}
+
+/// A module `use_<module>` with every port of the top, whose body is the top's
+/// instantiation template, included as a user would paste it.
+fn user_of(module: &str, ports: &[Port]) -> String {
+    let decls: Vec<String> = ports
+        .iter()
+        .map(|p| format!("    {} {}{}", p.direction, range(p), p.name))
+        .collect();
+    format!(
+        "module use_{module} (\n{}\n);\n`include \"{module}_inst.v\"\nendmodule\n",
+        decls.join(",\n")
+    )
+}
+
+/// A top `two_cores` that instantiates `use_<module>` of each of `modules` (cores of the
+/// given ports): the encoder, clock and reset shared, the configuration tied to 0 (the
+/// generated defaults), and every output of each reduced into one parity bit, so nothing
+/// is unused.
+fn two_cores(cores: &[(&str, Vec<Port>)]) -> String {
+    let shared = ["clock", "reset", "enc_a", "enc_b", "enc_z"];
+    let mut v = format!(
+        "module two_cores (\n    input clock, input reset, input enc_a, input enc_b, input enc_z,\n    {}\n);\n",
+        (0..cores.len())
+            .map(|k| format!("output parity_{k}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    for (k, (module, ports)) in cores.iter().enumerate() {
+        let mut conns = Vec::new();
+        let mut outs = Vec::new();
+        for p in ports {
+            let signal = if p.is_input() {
+                if shared.contains(&p.name) {
+                    p.name.to_string()
+                } else {
+                    format!("{}'d0", p.width)
+                }
+            } else {
+                v.push_str(&format!("    wire {}c{k}_{};\n", range(p), p.name));
+                outs.push(format!("c{k}_{}", p.name));
+                format!("c{k}_{}", p.name)
+            };
+            conns.push(format!("        .{}({signal})", p.name));
+        }
+        v.push_str(&format!(
+            "    use_{module} u{k} (\n{}\n    );\n    assign parity_{k} = ^{{{}}};\n",
+            conns.join(",\n"),
+            outs.join(", ")
+        ));
+    }
+    v.push_str("endmodule\n");
+    v
+}
+
+/// yosys reads `files` in `dir` and elaborates `top`: Ok, or yosys's error.
+fn yosys_elaborate(dir: &Path, files: &[String], top: &str) -> Result<String, String> {
+    tools::run(
+        Command::new("yosys")
+            .current_dir(dir)
+            .arg("-p")
+            .arg(format!(
+                "read_verilog {}; hierarchy -check -top {top}; proc; stat",
+                files.join(" ")
+            )),
+        "yosys",
+    )
+}
+
+/// Two cores of different parameters, generated with `--prefix acme_` and `--prefix beta_`,
+/// load together: Verilator `--lint-only -Wall` of both with their shipped waivers and
+/// templates is clean, and yosys elaborates both under one top. Without the prefixes the
+/// same two files redefine `encspeed_core` and yosys refuses them.
+#[test]
+fn two_prefixed_cores_load_together() {
+    let dir = tools::work_dir("packaging", "two-cores").unwrap();
+    let mut staged: Vec<(String, String)> = Vec::new();
+    let mut cores = Vec::new();
+    for (prefix, p) in [("acme_", default_params()), ("beta_", small_params())] {
+        let prefix = Prefix::new(prefix).unwrap();
+        let files = Top::Core.files_prefixed(&p, &prefix).unwrap();
+        let module = format!("{prefix}encspeed_core");
+        for (name, _) in &files {
+            assert!(name.starts_with(prefix.as_str()), "{name}");
+        }
+        let verilog = &files[0].1;
+        for line in verilog.lines().filter(|l| l.starts_with("module ")) {
+            assert!(line.starts_with(&format!("module {module}")), "{line}");
+        }
+        assert!(
+            !verilog.contains(" encspeed_"),
+            "an unprefixed name is left"
+        );
+        staged.extend(files);
+        let ports = Top::Core.ports(&p);
+        staged.push((format!("use_{module}.v"), user_of(&module, &ports)));
+        cores.push((module, ports));
+    }
+    let cores: Vec<(&str, Vec<Port>)> =
+        cores.iter().map(|(m, p)| (m.as_str(), p.clone())).collect();
+    staged.push(("two_cores.v".into(), two_cores(&cores)));
+    let refs: Vec<(&str, &str)> = staged
+        .iter()
+        .map(|(n, t)| (n.as_str(), t.as_str()))
+        .collect();
+    tools::stage(&dir, &refs).unwrap();
+    let vlt: Vec<&str> = refs
+        .iter()
+        .map(|r| r.0)
+        .filter(|n| n.ends_with(".vlt"))
+        .collect();
+    let verilog: Vec<&str> = refs
+        .iter()
+        .map(|r| r.0)
+        .filter(|n| n.ends_with(".v") && !n.ends_with("_inst.v"))
+        .collect();
+    let files: Vec<&str> = vlt.iter().chain(&verilog).copied().collect();
+    tools::verilator_lint(&dir, "two_cores", &files).unwrap();
+    let verilog: Vec<String> = verilog.iter().map(|s| s.to_string()).collect();
+    let log = yosys_elaborate(&dir, &verilog, "two_cores").unwrap();
+    assert!(log.contains("acme_encspeed_core") && log.contains("beta_encspeed_core"));
+
+    // The control: the same two configurations unprefixed define encspeed_core twice.
+    let dir = tools::work_dir("packaging", "two-cores-unprefixed").unwrap();
+    let a = Top::Core.files(&default_params()).unwrap().swap_remove(0).1;
+    let b = Top::Core.files(&small_params()).unwrap().swap_remove(0).1;
+    tools::stage(&dir, &[("a.v", &a), ("b.v", &b)]).unwrap();
+    let e = yosys_elaborate(&dir, &["a.v".into(), "b.v".into()], "encspeed_core").unwrap_err();
+    assert!(e.contains("Re-definition of module"), "{e}");
+}
+
+/// `verilator --lint-only -Wall <top>.vlt <top>.v` on each shipped top, as
+/// docs/integration.md tells a user to run it, is clean.
+#[test]
+fn every_shipped_top_lints_clean_with_its_shipped_waivers() {
+    for top in Top::ALL {
+        let module = top.module();
+        let dir = generated("");
+        tools::verilator_lint(
+            &dir,
+            module,
+            &[&format!("{module}.vlt"), &top.verilog_file()],
+        )
+        .unwrap_or_else(|e| panic!("{module}: {e}"));
+    }
+}
+
+/// Each shipped top's `_inst.v`, pasted into a module with the top's ports, compiles
+/// against the shipped Verilog in Icarus `-Wall` with no warning (a port of the wrong width
+/// or a missing one would warn).
+#[test]
+fn every_instantiation_template_compiles_against_its_top() {
+    let p = default_params();
+    for top in Top::ALL {
+        let module = top.module();
+        let dir = tools::work_dir("packaging", &format!("inst-{module}")).unwrap();
+        let read = |name: String| {
+            std::fs::read_to_string(generated(&name)).unwrap_or_else(|e| panic!("{name}: {e}"))
+        };
+        let verilog = read(top.verilog_file());
+        let inst = read(format!("{module}_inst.v"));
+        assert_eq!(
+            inst.matches("\n    .").count(),
+            top.ports(&p).len(),
+            "{module}: one line per port"
+        );
+        let user = user_of(module, &top.ports(&p));
+        let v = format!("{module}.v");
+        let i = format!("{module}_inst.v");
+        let u = format!("use_{module}.v");
+        tools::stage(&dir, &[(&v, &verilog), (&i, &inst), (&u, &user)]).unwrap();
+        tools::iverilog(
+            &dir,
+            &["-s", &format!("use_{module}")],
+            &[&v, &u],
+            "inst.vvp",
+        )
+        .unwrap_or_else(|e| panic!("{module}: {e}"));
+    }
+}
+
+/// The C headers of two prefixed configurations compile into one C file (`-Wall -Wextra
+/// -Werror`), each with its own values: 24-bit counters in one, 10-bit in the other.
+#[test]
+fn two_prefixed_c_headers_compile_together() {
+    let dir = tools::work_dir("packaging", "c-headers").unwrap();
+    let mut staged = Vec::new();
+    for (prefix, p) in [("acme_", default_params()), ("beta_", small_params())] {
+        let prefix = Prefix::new(prefix).unwrap();
+        for top in [Top::Wb, Top::EccWb] {
+            for (name, text) in top.files_prefixed(&p, &prefix).unwrap() {
+                if name.ends_with(".h") {
+                    staged.push((name, text));
+                }
+            }
+        }
+    }
+    assert_eq!(staged.len(), 4);
+    let mut c: String = staged
+        .iter()
+        .map(|(n, _)| format!("#include \"{n}\"\n"))
+        .collect();
+    c.push_str(
+        "_Static_assert(ACME_ENCSPEED_COUNTER_BITS == 24u, \"acme\");\n\
+         _Static_assert(BETA_ENCSPEED_COUNTER_BITS == 10u, \"beta\");\n\
+         _Static_assert(ACME_ENCSPEED_ECC_BASE == BETA_ENCSPEED_ECC_BASE, \"one window layout\");\n\
+         int main(void) { return 0; }\n",
+    );
+    staged.push(("both.c".into(), c));
+    let refs: Vec<(&str, &str)> = staged
+        .iter()
+        .map(|(n, t)| (n.as_str(), t.as_str()))
+        .collect();
+    tools::stage(&dir, &refs).unwrap();
+    tools::run(
+        Command::new("cc").current_dir(&dir).args([
+            "-std=c11", "-Wall", "-Wextra", "-Werror", "-c", "both.c", "-o", "both.o",
+        ]),
+        "cc",
+    )
+    .unwrap();
+}
+
+/// Every shipped top has a manifest with its module, its ports in the order of the module
+/// header, the latencies, and an error budget whose PC column is 1/r_s, by hand; the bus
+/// tops list their registers.
+#[test]
+fn every_manifest_carries_ports_latencies_and_the_error_budget() {
+    for top in Top::ALL {
+        let module = top.module();
+        let text = std::fs::read_to_string(generated(&format!("{module}.toml"))).unwrap();
+        let m: toml::Value = toml::from_str(&text).unwrap();
+        assert_eq!(m["generator"]["top_module"].as_str(), Some(module));
+        let ports: Vec<&str> = m["ports"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p["name"].as_str().unwrap())
+            .collect();
+        let verilog = std::fs::read_to_string(generated(&top.verilog_file())).unwrap();
+        assert!(verilog.contains(&format!("module {module}({});", ports.join(","))));
+        assert!(m["derived"]["latency"]["edge_to_speed_strobe"]
+            .as_integer()
+            .is_some());
+        let budget = m["error_budget"].as_array().unwrap();
+        assert!(budget.len() >= 12, "{module}: {} rows", budget.len());
+        for row in budget {
+            // PC's bound is 1/r_s: one step in the window.
+            let rs = row["steps_per_dt"].as_float().unwrap();
+            assert!((row["pc"].as_float().unwrap() - 1.0 / rs).abs() < 1e-12);
+            // x4 at 1000 r/min, default: r_s = 1000/60 · 4096 · 1 ms = 68.27 steps/dt.
+            if row["mode"].as_str() == Some("x4") && row["rev_per_min"].as_float() == Some(1e3) {
+                assert!((rs - 68.266_666_666_666_67).abs() < 1e-9);
+            }
+        }
+        let has_bus = matches!(top, Top::Wb | Top::EccWb);
+        assert_eq!(m.get("registers").is_some(), has_bus, "{module}");
+        assert_eq!(m.get("eccentricity").is_some(), top.has_ecc(), "{module}");
+        if has_bus {
+            let names: Vec<&str> = m["registers"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|r| r["name"].as_str().unwrap())
+                .collect();
+            assert!(
+                names.contains(&"ID") && names.contains(&"SPEED_N3_LO"),
+                "{names:?}"
+            );
+            assert_eq!(names.contains(&"ECC_C"), top == Top::EccWb);
+        }
+    }
+}
