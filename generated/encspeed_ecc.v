@@ -1508,6 +1508,11 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
+    reg  [23:0] div$rem;
+    reg  div$bit_in;
+    reg  [23:0] div$den;
+    wire  [23:0] div$next_rem;
+    wire  div$fits;
     
     // Local signals
     reg  take;
@@ -1524,13 +1529,6 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
     reg  mul_md_msb;
     reg  mul_sum_msb;
     reg  mul_carry;
-    reg  dq_msb;
-    reg  rem_msb;
-    reg  [23:0] shifted;
-    reg  [23:0] diff;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  borrow;
     reg  fits;
     reg  [23:0] next_rem;
     reg  sel_neg;
@@ -1708,6 +1706,13 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
         .d(valid_reg$d),
         .q(valid_reg$q),
         .clock(valid_reg$clock)
+    );
+    encspeed_ecc$core$baseline$div div(
+        .rem(div$rem),
+        .bit_in(div$bit_in),
+        .den(div$den),
+        .next_rem(div$next_rem),
+        .fits(div$fits)
     );
     
     // Update code
@@ -1966,21 +1971,11 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
         end
         mul_sum_msb = (mul_sum & n_msb) != n_zero;
         mul_carry = mul_q0 & ((mul_a_msb & mul_md_msb) | ((mul_a_msb | mul_md_msb) & (~mul_sum_msb)));
-        dq_msb = (dq$q & s_msb) != s_zero;
-        rem_msb = (part_rem$q & n_msb) != n_zero;
-        shifted = part_rem$q << sh_one;
-        if (dq_msb) begin
-            shifted = (part_rem$q << sh_one) | n_one;
-        end
-        diff = shifted - den$q;
-        shifted_msb = (shifted & n_msb) != n_zero;
-        den_msb = (den$q & n_msb) != n_zero;
-        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & n_msb) != n_zero));
-        fits = rem_msb | (~borrow);
-        next_rem = shifted;
-        if (fits) begin
-            next_rem = diff;
-        end
+        div$rem = part_rem$q;
+        div$bit_in = (dq$q & s_msb) != s_zero;
+        div$den = den$q;
+        fits = div$fits;
+        next_rem = div$next_rem;
         sel_neg = w_et_neg$q;
         sel_zero = w_et_zero$q;
         sel_sat = 1'b0;
@@ -2301,6 +2296,50 @@ module encspeed_ecc$core$baseline$den(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$baseline$den
+
+
+module encspeed_ecc$core$baseline$div(rem,bit_in,den,next_rem,fits);
+    
+    // Module arguments
+    input wire  [23:0] rem;
+    input wire  bit_in;
+    input wire  [23:0] den;
+    output reg  [23:0] next_rem;
+    output reg  fits;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  msb = 24'h800000;
+    localparam  sh_one = 8'h1;
+    
+    // Local signals
+    reg  [23:0] shifted;
+    reg  [23:0] diff;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  borrow;
+    reg  l_fits;
+    
+    // Update code
+    always @(*) begin
+        shifted = rem << sh_one;
+        if (bit_in) begin
+            shifted = (rem << sh_one) | one;
+        end
+        diff = shifted - den;
+        shifted_msb = (shifted & msb) != zero;
+        den_msb = (den & msb) != zero;
+        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & msb) != zero));
+        l_fits = ((rem & msb) != zero) | (~borrow);
+        next_rem = shifted;
+        if (l_fits) begin
+            next_rem = diff;
+        end
+        fits = l_fits;
+    end
+    
+endmodule // encspeed_ecc$core$baseline$div
 
 
 module encspeed_ecc$core$baseline$dq(d,q,clock);
@@ -3010,6 +3049,11 @@ module encspeed_ecc$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
+    reg  [48:0] div$rem;
+    reg  div$bit_in;
+    reg  [48:0] div$den;
+    wire  [48:0] div$next_rem;
+    wire  div$fits;
     
     // Local signals
     reg  [48:0] req_nep_wide;
@@ -3017,11 +3061,6 @@ module encspeed_ecc$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_
     reg  high;
     reg  [48:0] num_sel;
     reg  [48:0] den_sel;
-    reg  [48:0] shifted;
-    reg  [48:0] diff;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  borrow;
     reg  fits;
     reg  [48:0] next_rem;
     reg  x_bit;
@@ -3160,6 +3199,13 @@ module encspeed_ecc$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_
         .d(valid_reg$d),
         .q(valid_reg$q),
         .clock(valid_reg$clock)
+    );
+    encspeed_ecc$core$calc$div div(
+        .rem(div$rem),
+        .bit_in(div$bit_in),
+        .den(div$den),
+        .next_rem(div$next_rem),
+        .fits(div$fits)
     );
     
     // Update code
@@ -3529,19 +3575,11 @@ module encspeed_ecc$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_
                 den_sel = (w_ndt$q << sh_one) | p_one;
             end
         end
-        shifted = part_rem$q << sh_one;
-        if ((num_shift$q & p_msb) != p_zero) begin
-            shifted = (part_rem$q << sh_one) | p_one;
-        end
-        diff = shifted - den$q;
-        shifted_msb = (shifted & p_msb) != p_zero;
-        den_msb = (den$q & p_msb) != p_zero;
-        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & p_msb) != p_zero));
-        fits = ((part_rem$q & p_msb) != p_zero) | (~borrow);
-        next_rem = shifted;
-        if (fits) begin
-            next_rem = diff;
-        end
+        div$rem = part_rem$q;
+        div$bit_in = (num_shift$q & p_msb) != p_zero;
+        div$den = den$q;
+        fits = div$fits;
+        next_rem = div$next_rem;
         x_bit = (mul_x$q & p_x_msb) != p_zero;
         half = quo$q >> sh_one;
         round_bit = (quo$q & s_one) != s_zero;
@@ -3728,6 +3766,50 @@ module encspeed_ecc$core$calc$den(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$calc$den
+
+
+module encspeed_ecc$core$calc$div(rem,bit_in,den,next_rem,fits);
+    
+    // Module arguments
+    input wire  [48:0] rem;
+    input wire  bit_in;
+    input wire  [48:0] den;
+    output reg  [48:0] next_rem;
+    output reg  fits;
+    
+    // Constant declarations
+    localparam  zero = 49'h0;
+    localparam  one = 49'h1;
+    localparam  msb = 49'h1000000000000;
+    localparam  sh_one = 8'h1;
+    
+    // Local signals
+    reg  [48:0] shifted;
+    reg  [48:0] diff;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  borrow;
+    reg  l_fits;
+    
+    // Update code
+    always @(*) begin
+        shifted = rem << sh_one;
+        if (bit_in) begin
+            shifted = (rem << sh_one) | one;
+        end
+        diff = shifted - den;
+        shifted_msb = (shifted & msb) != zero;
+        den_msb = (den & msb) != zero;
+        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & msb) != zero));
+        l_fits = ((rem & msb) != zero) | (~borrow);
+        next_rem = shifted;
+        if (l_fits) begin
+            next_rem = diff;
+        end
+        fits = l_fits;
+    end
+    
+endmodule // encspeed_ecc$core$calc$div
 
 
 module encspeed_ecc$core$calc$mul_on(d,q,clock);
@@ -8054,6 +8136,9 @@ module encspeed_ecc$core$tag(clock,reset,start,position,nep,ndt,tag_position,tag
             pending$d = 1'b0;
             running$d = 1'b0;
             out_valid$d = 1'b0;
+            out_position$d = out_position$q;
+            out_nep$d = out_nep$q;
+            out_ndt$d = out_ndt$q;
         end
         tag_position = out_position$q;
         tag_nep = out_nep$q;
@@ -11875,6 +11960,11 @@ module encspeed_ecc$corrector$speed(clock,reset,start,mt_m,mt_t,mt_negative,ecc_
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
+    reg  [23:0] div$rem;
+    reg  div$bit_in;
+    reg  [23:0] div$den;
+    wire  [23:0] div$next_rem;
+    wire  div$fits;
     
     // Local signals
     reg  [40:0] m_top;
@@ -11900,13 +11990,6 @@ module encspeed_ecc$corrector$speed(clock,reset,start,mt_m,mt_t,mt_negative,ecc_
     reg  [40:0] pre_hi;
     reg  [23:0] load_rem;
     reg  [40:0] load_dq;
-    reg  dq_msb;
-    reg  rem_msb;
-    reg  [23:0] shifted;
-    reg  [23:0] diff;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  borrow;
     reg  fits;
     reg  [23:0] next_rem;
     reg  [40:0] half;
@@ -12029,6 +12112,13 @@ module encspeed_ecc$corrector$speed(clock,reset,start,mt_m,mt_t,mt_negative,ecc_
         .d(valid_reg$d),
         .q(valid_reg$q),
         .clock(valid_reg$clock)
+    );
+    encspeed_ecc$corrector$speed$div div(
+        .rem(div$rem),
+        .bit_in(div$bit_in),
+        .den(div$den),
+        .next_rem(div$next_rem),
+        .fits(div$fits)
     );
     
     // Update code
@@ -12904,21 +12994,11 @@ module encspeed_ecc$corrector$speed(clock,reset,start,mt_m,mt_t,mt_negative,ecc_
                 load_dq = load_dq >> sh_one;
             end
         end
-        dq_msb = (dq$q & s_msb) != s_zero;
-        rem_msb = (part_rem$q & n_msb) != n_zero;
-        shifted = part_rem$q << sh_one;
-        if (dq_msb) begin
-            shifted = (part_rem$q << sh_one) | n_one;
-        end
-        diff = shifted - den$q;
-        shifted_msb = (shifted & n_msb) != n_zero;
-        den_msb = (den$q & n_msb) != n_zero;
-        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & n_msb) != n_zero));
-        fits = rem_msb | (~borrow);
-        next_rem = shifted;
-        if (fits) begin
-            next_rem = diff;
-        end
+        div$rem = part_rem$q;
+        div$bit_in = (dq$q & s_msb) != s_zero;
+        div$den = den$q;
+        fits = div$fits;
+        next_rem = div$next_rem;
         half = dq$q >> sh_one;
         round_bit = ((dq$q & s_one) != s_zero) & (~&dq$q);
         if (w_sat$q) begin
@@ -13048,6 +13128,50 @@ module encspeed_ecc$corrector$speed$den(d,q,clock);
     end
           
 endmodule // encspeed_ecc$corrector$speed$den
+
+
+module encspeed_ecc$corrector$speed$div(rem,bit_in,den,next_rem,fits);
+    
+    // Module arguments
+    input wire  [23:0] rem;
+    input wire  bit_in;
+    input wire  [23:0] den;
+    output reg  [23:0] next_rem;
+    output reg  fits;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  msb = 24'h800000;
+    localparam  sh_one = 8'h1;
+    
+    // Local signals
+    reg  [23:0] shifted;
+    reg  [23:0] diff;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  borrow;
+    reg  l_fits;
+    
+    // Update code
+    always @(*) begin
+        shifted = rem << sh_one;
+        if (bit_in) begin
+            shifted = (rem << sh_one) | one;
+        end
+        diff = shifted - den;
+        shifted_msb = (shifted & msb) != zero;
+        den_msb = (den & msb) != zero;
+        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & msb) != zero));
+        l_fits = ((rem & msb) != zero) | (~borrow);
+        next_rem = shifted;
+        if (l_fits) begin
+            next_rem = diff;
+        end
+        fits = l_fits;
+    end
+    
+endmodule // encspeed_ecc$corrector$speed$div
 
 
 module encspeed_ecc$corrector$speed$dq(d,q,clock);

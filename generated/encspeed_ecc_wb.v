@@ -1832,6 +1832,11 @@ module encspeed_ecc_wb$ecc$core$baseline(clock,reset,start,pc_count,et_period,et
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
+    reg  [23:0] div$rem;
+    reg  div$bit_in;
+    reg  [23:0] div$den;
+    wire  [23:0] div$next_rem;
+    wire  div$fits;
     
     // Local signals
     reg  take;
@@ -1848,13 +1853,6 @@ module encspeed_ecc_wb$ecc$core$baseline(clock,reset,start,pc_count,et_period,et
     reg  mul_md_msb;
     reg  mul_sum_msb;
     reg  mul_carry;
-    reg  dq_msb;
-    reg  rem_msb;
-    reg  [23:0] shifted;
-    reg  [23:0] diff;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  borrow;
     reg  fits;
     reg  [23:0] next_rem;
     reg  sel_neg;
@@ -2032,6 +2030,13 @@ module encspeed_ecc_wb$ecc$core$baseline(clock,reset,start,pc_count,et_period,et
         .d(valid_reg$d),
         .q(valid_reg$q),
         .clock(valid_reg$clock)
+    );
+    encspeed_ecc_wb$ecc$core$baseline$div div(
+        .rem(div$rem),
+        .bit_in(div$bit_in),
+        .den(div$den),
+        .next_rem(div$next_rem),
+        .fits(div$fits)
     );
     
     // Update code
@@ -2290,21 +2295,11 @@ module encspeed_ecc_wb$ecc$core$baseline(clock,reset,start,pc_count,et_period,et
         end
         mul_sum_msb = (mul_sum & n_msb) != n_zero;
         mul_carry = mul_q0 & ((mul_a_msb & mul_md_msb) | ((mul_a_msb | mul_md_msb) & (~mul_sum_msb)));
-        dq_msb = (dq$q & s_msb) != s_zero;
-        rem_msb = (part_rem$q & n_msb) != n_zero;
-        shifted = part_rem$q << sh_one;
-        if (dq_msb) begin
-            shifted = (part_rem$q << sh_one) | n_one;
-        end
-        diff = shifted - den$q;
-        shifted_msb = (shifted & n_msb) != n_zero;
-        den_msb = (den$q & n_msb) != n_zero;
-        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & n_msb) != n_zero));
-        fits = rem_msb | (~borrow);
-        next_rem = shifted;
-        if (fits) begin
-            next_rem = diff;
-        end
+        div$rem = part_rem$q;
+        div$bit_in = (dq$q & s_msb) != s_zero;
+        div$den = den$q;
+        fits = div$fits;
+        next_rem = div$next_rem;
         sel_neg = w_et_neg$q;
         sel_zero = w_et_zero$q;
         sel_sat = 1'b0;
@@ -2625,6 +2620,50 @@ module encspeed_ecc_wb$ecc$core$baseline$den(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$baseline$den
+
+
+module encspeed_ecc_wb$ecc$core$baseline$div(rem,bit_in,den,next_rem,fits);
+    
+    // Module arguments
+    input wire  [23:0] rem;
+    input wire  bit_in;
+    input wire  [23:0] den;
+    output reg  [23:0] next_rem;
+    output reg  fits;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  msb = 24'h800000;
+    localparam  sh_one = 8'h1;
+    
+    // Local signals
+    reg  [23:0] shifted;
+    reg  [23:0] diff;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  borrow;
+    reg  l_fits;
+    
+    // Update code
+    always @(*) begin
+        shifted = rem << sh_one;
+        if (bit_in) begin
+            shifted = (rem << sh_one) | one;
+        end
+        diff = shifted - den;
+        shifted_msb = (shifted & msb) != zero;
+        den_msb = (den & msb) != zero;
+        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & msb) != zero));
+        l_fits = ((rem & msb) != zero) | (~borrow);
+        next_rem = shifted;
+        if (l_fits) begin
+            next_rem = diff;
+        end
+        fits = l_fits;
+    end
+    
+endmodule // encspeed_ecc_wb$ecc$core$baseline$div
 
 
 module encspeed_ecc_wb$ecc$core$baseline$dq(d,q,clock);
@@ -3334,6 +3373,11 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,speed_n1
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
+    reg  [48:0] div$rem;
+    reg  div$bit_in;
+    reg  [48:0] div$den;
+    wire  [48:0] div$next_rem;
+    wire  div$fits;
     
     // Local signals
     reg  [48:0] req_nep_wide;
@@ -3341,11 +3385,6 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,speed_n1
     reg  high;
     reg  [48:0] num_sel;
     reg  [48:0] den_sel;
-    reg  [48:0] shifted;
-    reg  [48:0] diff;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  borrow;
     reg  fits;
     reg  [48:0] next_rem;
     reg  x_bit;
@@ -3484,6 +3523,13 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,speed_n1
         .d(valid_reg$d),
         .q(valid_reg$q),
         .clock(valid_reg$clock)
+    );
+    encspeed_ecc_wb$ecc$core$calc$div div(
+        .rem(div$rem),
+        .bit_in(div$bit_in),
+        .den(div$den),
+        .next_rem(div$next_rem),
+        .fits(div$fits)
     );
     
     // Update code
@@ -3853,19 +3899,11 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,speed_n1
                 den_sel = (w_ndt$q << sh_one) | p_one;
             end
         end
-        shifted = part_rem$q << sh_one;
-        if ((num_shift$q & p_msb) != p_zero) begin
-            shifted = (part_rem$q << sh_one) | p_one;
-        end
-        diff = shifted - den$q;
-        shifted_msb = (shifted & p_msb) != p_zero;
-        den_msb = (den$q & p_msb) != p_zero;
-        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & p_msb) != p_zero));
-        fits = ((part_rem$q & p_msb) != p_zero) | (~borrow);
-        next_rem = shifted;
-        if (fits) begin
-            next_rem = diff;
-        end
+        div$rem = part_rem$q;
+        div$bit_in = (num_shift$q & p_msb) != p_zero;
+        div$den = den$q;
+        fits = div$fits;
+        next_rem = div$next_rem;
         x_bit = (mul_x$q & p_x_msb) != p_zero;
         half = quo$q >> sh_one;
         round_bit = (quo$q & s_one) != s_zero;
@@ -4052,6 +4090,50 @@ module encspeed_ecc_wb$ecc$core$calc$den(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$calc$den
+
+
+module encspeed_ecc_wb$ecc$core$calc$div(rem,bit_in,den,next_rem,fits);
+    
+    // Module arguments
+    input wire  [48:0] rem;
+    input wire  bit_in;
+    input wire  [48:0] den;
+    output reg  [48:0] next_rem;
+    output reg  fits;
+    
+    // Constant declarations
+    localparam  zero = 49'h0;
+    localparam  one = 49'h1;
+    localparam  msb = 49'h1000000000000;
+    localparam  sh_one = 8'h1;
+    
+    // Local signals
+    reg  [48:0] shifted;
+    reg  [48:0] diff;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  borrow;
+    reg  l_fits;
+    
+    // Update code
+    always @(*) begin
+        shifted = rem << sh_one;
+        if (bit_in) begin
+            shifted = (rem << sh_one) | one;
+        end
+        diff = shifted - den;
+        shifted_msb = (shifted & msb) != zero;
+        den_msb = (den & msb) != zero;
+        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & msb) != zero));
+        l_fits = ((rem & msb) != zero) | (~borrow);
+        next_rem = shifted;
+        if (l_fits) begin
+            next_rem = diff;
+        end
+        fits = l_fits;
+    end
+    
+endmodule // encspeed_ecc_wb$ecc$core$calc$div
 
 
 module encspeed_ecc_wb$ecc$core$calc$mul_on(d,q,clock);
@@ -8378,6 +8460,9 @@ module encspeed_ecc_wb$ecc$core$tag(clock,reset,start,position,nep,ndt,tag_posit
             pending$d = 1'b0;
             running$d = 1'b0;
             out_valid$d = 1'b0;
+            out_position$d = out_position$q;
+            out_nep$d = out_nep$q;
+            out_ndt$d = out_ndt$q;
         end
         tag_position = out_position$q;
         tag_nep = out_nep$q;
@@ -12199,6 +12284,11 @@ module encspeed_ecc_wb$ecc$corrector$speed(clock,reset,start,mt_m,mt_t,mt_negati
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
+    reg  [23:0] div$rem;
+    reg  div$bit_in;
+    reg  [23:0] div$den;
+    wire  [23:0] div$next_rem;
+    wire  div$fits;
     
     // Local signals
     reg  [40:0] m_top;
@@ -12224,13 +12314,6 @@ module encspeed_ecc_wb$ecc$corrector$speed(clock,reset,start,mt_m,mt_t,mt_negati
     reg  [40:0] pre_hi;
     reg  [23:0] load_rem;
     reg  [40:0] load_dq;
-    reg  dq_msb;
-    reg  rem_msb;
-    reg  [23:0] shifted;
-    reg  [23:0] diff;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  borrow;
     reg  fits;
     reg  [23:0] next_rem;
     reg  [40:0] half;
@@ -12353,6 +12436,13 @@ module encspeed_ecc_wb$ecc$corrector$speed(clock,reset,start,mt_m,mt_t,mt_negati
         .d(valid_reg$d),
         .q(valid_reg$q),
         .clock(valid_reg$clock)
+    );
+    encspeed_ecc_wb$ecc$corrector$speed$div div(
+        .rem(div$rem),
+        .bit_in(div$bit_in),
+        .den(div$den),
+        .next_rem(div$next_rem),
+        .fits(div$fits)
     );
     
     // Update code
@@ -13228,21 +13318,11 @@ module encspeed_ecc_wb$ecc$corrector$speed(clock,reset,start,mt_m,mt_t,mt_negati
                 load_dq = load_dq >> sh_one;
             end
         end
-        dq_msb = (dq$q & s_msb) != s_zero;
-        rem_msb = (part_rem$q & n_msb) != n_zero;
-        shifted = part_rem$q << sh_one;
-        if (dq_msb) begin
-            shifted = (part_rem$q << sh_one) | n_one;
-        end
-        diff = shifted - den$q;
-        shifted_msb = (shifted & n_msb) != n_zero;
-        den_msb = (den$q & n_msb) != n_zero;
-        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & n_msb) != n_zero));
-        fits = rem_msb | (~borrow);
-        next_rem = shifted;
-        if (fits) begin
-            next_rem = diff;
-        end
+        div$rem = part_rem$q;
+        div$bit_in = (dq$q & s_msb) != s_zero;
+        div$den = den$q;
+        fits = div$fits;
+        next_rem = div$next_rem;
         half = dq$q >> sh_one;
         round_bit = ((dq$q & s_one) != s_zero) & (~&dq$q);
         if (w_sat$q) begin
@@ -13372,6 +13452,50 @@ module encspeed_ecc_wb$ecc$corrector$speed$den(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$corrector$speed$den
+
+
+module encspeed_ecc_wb$ecc$corrector$speed$div(rem,bit_in,den,next_rem,fits);
+    
+    // Module arguments
+    input wire  [23:0] rem;
+    input wire  bit_in;
+    input wire  [23:0] den;
+    output reg  [23:0] next_rem;
+    output reg  fits;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  msb = 24'h800000;
+    localparam  sh_one = 8'h1;
+    
+    // Local signals
+    reg  [23:0] shifted;
+    reg  [23:0] diff;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  borrow;
+    reg  l_fits;
+    
+    // Update code
+    always @(*) begin
+        shifted = rem << sh_one;
+        if (bit_in) begin
+            shifted = (rem << sh_one) | one;
+        end
+        diff = shifted - den;
+        shifted_msb = (shifted & msb) != zero;
+        den_msb = (den & msb) != zero;
+        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & msb) != zero));
+        l_fits = ((rem & msb) != zero) | (~borrow);
+        next_rem = shifted;
+        if (l_fits) begin
+            next_rem = diff;
+        end
+        fits = l_fits;
+    end
+    
+endmodule // encspeed_ecc_wb$ecc$corrector$speed$div
 
 
 module encspeed_ecc_wb$ecc$corrector$speed$dq(d,q,clock);
@@ -21738,56 +21862,6 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
     input wire  [15:0] rev_error_count;
     
     // Constant declarations
-    localparam  adr_mask = 8'hfc;
-    localparam  a_id = 8'h0;
-    localparam  a_version = 8'h4;
-    localparam  a_param0 = 8'h8;
-    localparam  a_param1 = 8'hc;
-    localparam  a_lines = 8'h10;
-    localparam  a_dt_default = 8'h14;
-    localparam  a_timeout_default = 8'h18;
-    localparam  a_clock_hz = 8'h1c;
-    localparam  a_ctrl = 8'h20;
-    localparam  a_cfg_dt = 8'h24;
-    localparam  a_cfg_timeout = 8'h28;
-    localparam  a_cfg_filter = 8'h2c;
-    localparam  a_status = 8'h30;
-    localparam  a_irq_enable = 8'h34;
-    localparam  a_irq_status = 8'h38;
-    localparam  a_position = 8'h40;
-    localparam  a_z_latch = 8'h44;
-    localparam  a_nep = 8'h48;
-    localparam  a_ndt = 8'h4c;
-    localparam  a_n1_lo = 8'h50;
-    localparam  a_n1_hi = 8'h54;
-    localparam  a_n2_lo = 8'h58;
-    localparam  a_n2_hi = 8'h5c;
-    localparam  a_n3_lo = 8'h60;
-    localparam  a_n3_hi = 8'h64;
-    localparam  a_pc_lo = 8'h68;
-    localparam  a_pc_hi = 8'h6c;
-    localparam  a_et_lo = 8'h70;
-    localparam  a_et_hi = 8'h74;
-    localparam  a_mt_lo = 8'h78;
-    localparam  a_mt_hi = 8'h7c;
-    localparam  a_glitch = 8'h80;
-    localparam  a_illegal = 8'h84;
-    localparam  a_rev = 8'h88;
-    localparam  k_id = 32'h454e4353;
-    localparam  k_version = 32'h10000;
-    localparam  k_param0 = 32'h20291018;
-    localparam  k_param1 = 32'h1010;
-    localparam  k_lines = 32'h400;
-    localparam  k_dt_default = 32'h186a0;
-    localparam  k_timeout_default = 32'h3e8;
-    localparam  k_clock_hz = 32'h5f5e100;
-    localparam  m_ctrl = 32'hf;
-    localparam  m_cfg_dt = 32'hffffff;
-    localparam  m_cfg_timeout = 32'hffffff;
-    localparam  m_cfg_filter = 32'hffff;
-    localparam  m_irq_enable = 32'h3f;
-    localparam  m_irq_w1c = 32'h3f;
-    localparam  m_fault_w1c = 32'h70;
     localparam  s_valid = 32'h1;
     localparam  s_stalled = 32'h2;
     localparam  s_direction = 32'h4;
@@ -21801,71 +21875,141 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
     localparam  e_fault = 32'h8;
     localparam  e_update = 32'h10;
     localparam  e_stall = 32'h20;
-    localparam  lane0 = 32'hff;
-    localparam  lane1 = 32'hff00;
-    localparam  lane2 = 32'hff0000;
-    localparam  lane3 = 32'hff000000;
-    localparam  c_zero = 32'h0;
-    localparam  c_one = 32'h1;
-    localparam  g_zero = 16'h0;
-    localparam  g_one = 16'h1;
     localparam  z32 = 32'h0;
-    localparam  msb32 = 32'h80000000;
-    localparam  z64 = 64'h0;
-    localparam  msb64 = 64'h8000000000000000;
-    localparam  sext = 64'hfffffe0000000000;
-    localparam  sh_one = 8'h1;
-    localparam  sh_c = 8'h0;
-    localparam  sh_n = 8'h8;
-    localparam  sh_g = 8'h10;
-    localparam  sh_s = 8'h17;
     
     // Stub signals
-    reg  ack$d;
-    wire  ack$q;
-    reg  ack$clock;
-    reg  [31:0] dat$d;
-    wire  [31:0] dat$q;
-    reg  dat$clock;
-    reg  [31:0] ctrl$d;
-    wire  [31:0] ctrl$q;
+    reg  file$clock;
+    reg  file$reset;
+    reg  file$wb_cyc_i;
+    reg  file$wb_stb_i;
+    reg  file$wb_we_i;
+    reg  [7:0] file$wb_adr_i;
+    reg  [31:0] file$wb_dat_i;
+    reg  [3:0] file$wb_sel_i;
+    wire  [31:0] file$wb_dat_o;
+    wire  file$wb_ack_o;
+    wire  file$irq;
+    reg  [31:0] file$events;
+    reg  [31:0] file$cells;
+    wire  [7:0] file$adr;
+    wire  file$rd;
+    wire  file$wr;
+    wire  [31:0] file$lanes;
+    wire  [31:0] file$ones;
+    reg  [7:0] id$adr;
+    wire  [31:0] id$rdata;
+    reg  [7:0] version$adr;
+    wire  [31:0] version$rdata;
+    reg  [7:0] param0$adr;
+    wire  [31:0] param0$rdata;
+    reg  [7:0] param1$adr;
+    wire  [31:0] param1$rdata;
+    reg  [7:0] lines$adr;
+    wire  [31:0] lines$rdata;
+    reg  [7:0] dt_default$adr;
+    wire  [31:0] dt_default$rdata;
+    reg  [7:0] timeout_default$adr;
+    wire  [31:0] timeout_default$rdata;
+    reg  [7:0] clock_hz$adr;
+    wire  [31:0] clock_hz$rdata;
     reg  ctrl$clock;
-    reg  [31:0] r_cfg_dt$d;
-    wire  [31:0] r_cfg_dt$q;
+    reg  ctrl$reset;
+    reg  [7:0] ctrl$adr;
+    reg  ctrl$wr;
+    reg  [31:0] ctrl$lanes;
+    reg  [31:0] ctrl$ones;
+    wire  [31:0] ctrl$rdata;
+    wire  [3:0] ctrl$q;
     reg  r_cfg_dt$clock;
-    reg  [31:0] r_cfg_timeout$d;
-    wire  [31:0] r_cfg_timeout$q;
+    reg  r_cfg_dt$reset;
+    reg  [7:0] r_cfg_dt$adr;
+    reg  r_cfg_dt$wr;
+    reg  [31:0] r_cfg_dt$lanes;
+    reg  [31:0] r_cfg_dt$ones;
+    wire  [31:0] r_cfg_dt$rdata;
+    wire  [23:0] r_cfg_dt$q;
     reg  r_cfg_timeout$clock;
-    reg  [31:0] r_cfg_filter$d;
-    wire  [31:0] r_cfg_filter$q;
+    reg  r_cfg_timeout$reset;
+    reg  [7:0] r_cfg_timeout$adr;
+    reg  r_cfg_timeout$wr;
+    reg  [31:0] r_cfg_timeout$lanes;
+    reg  [31:0] r_cfg_timeout$ones;
+    wire  [31:0] r_cfg_timeout$rdata;
+    wire  [23:0] r_cfg_timeout$q;
     reg  r_cfg_filter$clock;
-    reg  [31:0] irq_enable$d;
-    wire  [31:0] irq_enable$q;
-    reg  irq_enable$clock;
-    reg  [31:0] irq_status$d;
-    wire  [31:0] irq_status$q;
-    reg  irq_status$clock;
-    reg  [31:0] hi_n1$d;
-    wire  [31:0] hi_n1$q;
-    reg  hi_n1$clock;
-    reg  [31:0] hi_n2$d;
-    wire  [31:0] hi_n2$q;
-    reg  hi_n2$clock;
-    reg  [31:0] hi_n3$d;
-    wire  [31:0] hi_n3$q;
-    reg  hi_n3$clock;
-    reg  [31:0] hi_pc$d;
-    wire  [31:0] hi_pc$q;
-    reg  hi_pc$clock;
-    reg  [31:0] hi_et$d;
-    wire  [31:0] hi_et$q;
-    reg  hi_et$clock;
-    reg  [31:0] hi_mt$d;
-    wire  [31:0] hi_mt$q;
-    reg  hi_mt$clock;
-    reg  clear$d;
-    wire  clear$q;
-    reg  clear$clock;
+    reg  r_cfg_filter$reset;
+    reg  [7:0] r_cfg_filter$adr;
+    reg  r_cfg_filter$wr;
+    reg  [31:0] r_cfg_filter$lanes;
+    reg  [31:0] r_cfg_filter$ones;
+    wire  [31:0] r_cfg_filter$rdata;
+    wire  [15:0] r_cfg_filter$q;
+    reg  [7:0] status$adr;
+    reg  [31:0] status$value;
+    wire  [31:0] status$rdata;
+    reg  fault_clear$clock;
+    reg  fault_clear$reset;
+    reg  [7:0] fault_clear$adr;
+    reg  fault_clear$wr;
+    reg  [31:0] fault_clear$ones;
+    wire  fault_clear$pulse;
+    reg  [7:0] r_position$adr;
+    reg  [31:0] r_position$value;
+    wire  [31:0] r_position$rdata;
+    reg  [7:0] r_z_latch$adr;
+    reg  [31:0] r_z_latch$value;
+    wire  [31:0] r_z_latch$rdata;
+    reg  [7:0] r_nep$adr;
+    reg  [23:0] r_nep$value;
+    wire  [31:0] r_nep$rdata;
+    reg  [7:0] r_ndt$adr;
+    reg  [23:0] r_ndt$value;
+    wire  [31:0] r_ndt$rdata;
+    reg  n1$clock;
+    reg  n1$reset;
+    reg  [7:0] n1$adr;
+    reg  n1$rd;
+    reg  [40:0] n1$value;
+    wire  [31:0] n1$rdata;
+    reg  n2$clock;
+    reg  n2$reset;
+    reg  [7:0] n2$adr;
+    reg  n2$rd;
+    reg  [40:0] n2$value;
+    wire  [31:0] n2$rdata;
+    reg  n3$clock;
+    reg  n3$reset;
+    reg  [7:0] n3$adr;
+    reg  n3$rd;
+    reg  [40:0] n3$value;
+    wire  [31:0] n3$rdata;
+    reg  pc$clock;
+    reg  pc$reset;
+    reg  [7:0] pc$adr;
+    reg  pc$rd;
+    reg  [40:0] pc$value;
+    wire  [31:0] pc$rdata;
+    reg  et$clock;
+    reg  et$reset;
+    reg  [7:0] et$adr;
+    reg  et$rd;
+    reg  [40:0] et$value;
+    wire  [31:0] et$rdata;
+    reg  mt$clock;
+    reg  mt$reset;
+    reg  [7:0] mt$adr;
+    reg  mt$rd;
+    reg  [40:0] mt$value;
+    wire  [31:0] mt$rdata;
+    reg  [7:0] glitch$adr;
+    reg  [15:0] glitch$value;
+    wire  [31:0] glitch$rdata;
+    reg  [7:0] illegal$adr;
+    reg  [15:0] illegal$value;
+    wire  [31:0] illegal$rdata;
+    reg  [7:0] rev$adr;
+    reg  [15:0] rev$value;
+    wire  [31:0] rev$rdata;
     reg  prev_illegal$d;
     wire  prev_illegal$q;
     reg  prev_illegal$clock;
@@ -21880,110 +22024,198 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
     reg  prev_stalled$clock;
     
     // Local signals
-    reg  [7:0] adr;
-    reg  req;
-    reg  rd;
-    reg  wr;
-    reg  [31:0] lanes;
-    reg  [31:0] ones;
-    reg  [31:0] rdata;
-    reg  [31:0] irq_clear;
+    reg  [31:0] status_word;
     reg  [31:0] events;
     reg  fault_rose;
-    reg  [31:0] t_position;
-    reg  [31:0] t_z_latch;
-    reg  [15:0] t_glitch;
-    reg  [15:0] t_illegal;
-    reg  [15:0] t_rev;
-    reg  [31:0] x_position;
-    reg  [31:0] x_z_latch;
-    reg  [31:0] x_nep;
-    reg  [31:0] x_ndt;
-    reg  [31:0] x_glitch;
-    reg  [31:0] x_illegal;
-    reg  [31:0] x_rev;
-    reg  [63:0] x_n1;
-    reg  [63:0] x_n2;
-    reg  [63:0] x_n3;
-    reg  [63:0] x_pc;
-    reg  [63:0] x_et;
-    reg  [63:0] x_mt;
     
     // Sub module instances
-    encspeed_ecc_wb$regs$ack ack(
-        .d(ack$d),
-        .q(ack$q),
-        .clock(ack$clock)
+    encspeed_ecc_wb$regs$file file(
+        .clock(file$clock),
+        .reset(file$reset),
+        .wb_cyc_i(file$wb_cyc_i),
+        .wb_stb_i(file$wb_stb_i),
+        .wb_we_i(file$wb_we_i),
+        .wb_adr_i(file$wb_adr_i),
+        .wb_dat_i(file$wb_dat_i),
+        .wb_sel_i(file$wb_sel_i),
+        .wb_dat_o(file$wb_dat_o),
+        .wb_ack_o(file$wb_ack_o),
+        .irq(file$irq),
+        .events(file$events),
+        .cells(file$cells),
+        .adr(file$adr),
+        .rd(file$rd),
+        .wr(file$wr),
+        .lanes(file$lanes),
+        .ones(file$ones)
     );
-    encspeed_ecc_wb$regs$dat dat(
-        .d(dat$d),
-        .q(dat$q),
-        .clock(dat$clock)
+    encspeed_ecc_wb$regs$id id(
+        .adr(id$adr),
+        .rdata(id$rdata)
+    );
+    encspeed_ecc_wb$regs$version version(
+        .adr(version$adr),
+        .rdata(version$rdata)
+    );
+    encspeed_ecc_wb$regs$param0 param0(
+        .adr(param0$adr),
+        .rdata(param0$rdata)
+    );
+    encspeed_ecc_wb$regs$param1 param1(
+        .adr(param1$adr),
+        .rdata(param1$rdata)
+    );
+    encspeed_ecc_wb$regs$lines lines(
+        .adr(lines$adr),
+        .rdata(lines$rdata)
+    );
+    encspeed_ecc_wb$regs$dt_default dt_default(
+        .adr(dt_default$adr),
+        .rdata(dt_default$rdata)
+    );
+    encspeed_ecc_wb$regs$timeout_default timeout_default(
+        .adr(timeout_default$adr),
+        .rdata(timeout_default$rdata)
+    );
+    encspeed_ecc_wb$regs$clock_hz clock_hz(
+        .adr(clock_hz$adr),
+        .rdata(clock_hz$rdata)
     );
     encspeed_ecc_wb$regs$ctrl ctrl(
-        .d(ctrl$d),
-        .q(ctrl$q),
-        .clock(ctrl$clock)
+        .clock(ctrl$clock),
+        .reset(ctrl$reset),
+        .adr(ctrl$adr),
+        .wr(ctrl$wr),
+        .lanes(ctrl$lanes),
+        .ones(ctrl$ones),
+        .rdata(ctrl$rdata),
+        .q(ctrl$q)
     );
     encspeed_ecc_wb$regs$r_cfg_dt r_cfg_dt(
-        .d(r_cfg_dt$d),
-        .q(r_cfg_dt$q),
-        .clock(r_cfg_dt$clock)
+        .clock(r_cfg_dt$clock),
+        .reset(r_cfg_dt$reset),
+        .adr(r_cfg_dt$adr),
+        .wr(r_cfg_dt$wr),
+        .lanes(r_cfg_dt$lanes),
+        .ones(r_cfg_dt$ones),
+        .rdata(r_cfg_dt$rdata),
+        .q(r_cfg_dt$q)
     );
     encspeed_ecc_wb$regs$r_cfg_timeout r_cfg_timeout(
-        .d(r_cfg_timeout$d),
-        .q(r_cfg_timeout$q),
-        .clock(r_cfg_timeout$clock)
+        .clock(r_cfg_timeout$clock),
+        .reset(r_cfg_timeout$reset),
+        .adr(r_cfg_timeout$adr),
+        .wr(r_cfg_timeout$wr),
+        .lanes(r_cfg_timeout$lanes),
+        .ones(r_cfg_timeout$ones),
+        .rdata(r_cfg_timeout$rdata),
+        .q(r_cfg_timeout$q)
     );
     encspeed_ecc_wb$regs$r_cfg_filter r_cfg_filter(
-        .d(r_cfg_filter$d),
-        .q(r_cfg_filter$q),
-        .clock(r_cfg_filter$clock)
+        .clock(r_cfg_filter$clock),
+        .reset(r_cfg_filter$reset),
+        .adr(r_cfg_filter$adr),
+        .wr(r_cfg_filter$wr),
+        .lanes(r_cfg_filter$lanes),
+        .ones(r_cfg_filter$ones),
+        .rdata(r_cfg_filter$rdata),
+        .q(r_cfg_filter$q)
     );
-    encspeed_ecc_wb$regs$irq_enable irq_enable(
-        .d(irq_enable$d),
-        .q(irq_enable$q),
-        .clock(irq_enable$clock)
+    encspeed_ecc_wb$regs$status status(
+        .adr(status$adr),
+        .value(status$value),
+        .rdata(status$rdata)
     );
-    encspeed_ecc_wb$regs$irq_status irq_status(
-        .d(irq_status$d),
-        .q(irq_status$q),
-        .clock(irq_status$clock)
+    encspeed_ecc_wb$regs$fault_clear fault_clear(
+        .clock(fault_clear$clock),
+        .reset(fault_clear$reset),
+        .adr(fault_clear$adr),
+        .wr(fault_clear$wr),
+        .ones(fault_clear$ones),
+        .pulse(fault_clear$pulse)
     );
-    encspeed_ecc_wb$regs$hi_n1 hi_n1(
-        .d(hi_n1$d),
-        .q(hi_n1$q),
-        .clock(hi_n1$clock)
+    encspeed_ecc_wb$regs$r_position r_position(
+        .adr(r_position$adr),
+        .value(r_position$value),
+        .rdata(r_position$rdata)
     );
-    encspeed_ecc_wb$regs$hi_n2 hi_n2(
-        .d(hi_n2$d),
-        .q(hi_n2$q),
-        .clock(hi_n2$clock)
+    encspeed_ecc_wb$regs$r_z_latch r_z_latch(
+        .adr(r_z_latch$adr),
+        .value(r_z_latch$value),
+        .rdata(r_z_latch$rdata)
     );
-    encspeed_ecc_wb$regs$hi_n3 hi_n3(
-        .d(hi_n3$d),
-        .q(hi_n3$q),
-        .clock(hi_n3$clock)
+    encspeed_ecc_wb$regs$r_nep r_nep(
+        .adr(r_nep$adr),
+        .value(r_nep$value),
+        .rdata(r_nep$rdata)
     );
-    encspeed_ecc_wb$regs$hi_pc hi_pc(
-        .d(hi_pc$d),
-        .q(hi_pc$q),
-        .clock(hi_pc$clock)
+    encspeed_ecc_wb$regs$r_ndt r_ndt(
+        .adr(r_ndt$adr),
+        .value(r_ndt$value),
+        .rdata(r_ndt$rdata)
     );
-    encspeed_ecc_wb$regs$hi_et hi_et(
-        .d(hi_et$d),
-        .q(hi_et$q),
-        .clock(hi_et$clock)
+    encspeed_ecc_wb$regs$n1 n1(
+        .clock(n1$clock),
+        .reset(n1$reset),
+        .adr(n1$adr),
+        .rd(n1$rd),
+        .value(n1$value),
+        .rdata(n1$rdata)
     );
-    encspeed_ecc_wb$regs$hi_mt hi_mt(
-        .d(hi_mt$d),
-        .q(hi_mt$q),
-        .clock(hi_mt$clock)
+    encspeed_ecc_wb$regs$n2 n2(
+        .clock(n2$clock),
+        .reset(n2$reset),
+        .adr(n2$adr),
+        .rd(n2$rd),
+        .value(n2$value),
+        .rdata(n2$rdata)
     );
-    encspeed_ecc_wb$regs$clear clear(
-        .d(clear$d),
-        .q(clear$q),
-        .clock(clear$clock)
+    encspeed_ecc_wb$regs$n3 n3(
+        .clock(n3$clock),
+        .reset(n3$reset),
+        .adr(n3$adr),
+        .rd(n3$rd),
+        .value(n3$value),
+        .rdata(n3$rdata)
+    );
+    encspeed_ecc_wb$regs$pc pc(
+        .clock(pc$clock),
+        .reset(pc$reset),
+        .adr(pc$adr),
+        .rd(pc$rd),
+        .value(pc$value),
+        .rdata(pc$rdata)
+    );
+    encspeed_ecc_wb$regs$et et(
+        .clock(et$clock),
+        .reset(et$reset),
+        .adr(et$adr),
+        .rd(et$rd),
+        .value(et$value),
+        .rdata(et$rdata)
+    );
+    encspeed_ecc_wb$regs$mt mt(
+        .clock(mt$clock),
+        .reset(mt$reset),
+        .adr(mt$adr),
+        .rd(mt$rd),
+        .value(mt$value),
+        .rdata(mt$rdata)
+    );
+    encspeed_ecc_wb$regs$glitch glitch(
+        .adr(glitch$adr),
+        .value(glitch$value),
+        .rdata(glitch$rdata)
+    );
+    encspeed_ecc_wb$regs$illegal illegal(
+        .adr(illegal$adr),
+        .value(illegal$value),
+        .rdata(illegal$rdata)
+    );
+    encspeed_ecc_wb$regs$rev rev(
+        .adr(rev$adr),
+        .value(rev$value),
+        .rdata(rev$rdata)
     );
     encspeed_ecc_wb$regs$prev_illegal prev_illegal(
         .d(prev_illegal$d),
@@ -22008,2030 +22240,137 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
     
     // Update code
     always @(*) begin
-        ack$clock = clock;
-        dat$clock = clock;
-        ctrl$clock = clock;
-        r_cfg_dt$clock = clock;
-        r_cfg_timeout$clock = clock;
-        r_cfg_filter$clock = clock;
-        irq_enable$clock = clock;
-        irq_status$clock = clock;
-        hi_n1$clock = clock;
-        hi_n2$clock = clock;
-        hi_n3$clock = clock;
-        hi_pc$clock = clock;
-        hi_et$clock = clock;
-        hi_mt$clock = clock;
-        clear$clock = clock;
         prev_illegal$clock = clock;
         prev_overspeed$clock = clock;
         prev_revolution$clock = clock;
         prev_stalled$clock = clock;
-        ack$d = ack$q;
-        dat$d = dat$q;
-        ctrl$d = ctrl$q;
-        r_cfg_dt$d = r_cfg_dt$q;
-        r_cfg_timeout$d = r_cfg_timeout$q;
-        r_cfg_filter$d = r_cfg_filter$q;
-        irq_enable$d = irq_enable$q;
-        irq_status$d = irq_status$q;
-        hi_n1$d = hi_n1$q;
-        hi_n2$d = hi_n2$q;
-        hi_n3$d = hi_n3$q;
-        hi_pc$d = hi_pc$q;
-        hi_et$d = hi_et$q;
-        hi_mt$d = hi_mt$q;
-        clear$d = clear$q;
         prev_illegal$d = prev_illegal$q;
         prev_overspeed$d = prev_overspeed$q;
         prev_revolution$d = prev_revolution$q;
         prev_stalled$d = prev_stalled$q;
-        x_position = z32;
-        x_z_latch = z32;
-        t_position = position;
-        t_z_latch = z_latch;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_one;
-        if ((t_position & c_one) != c_zero) begin
-            x_position = x_position | msb32;
-        end
-        t_position = t_position >> sh_one;
-        x_z_latch = x_z_latch >> sh_one;
-        if ((t_z_latch & c_one) != c_zero) begin
-            x_z_latch = x_z_latch | msb32;
-        end
-        t_z_latch = t_z_latch >> sh_one;
-        x_position = x_position >> sh_c;
-        x_z_latch = x_z_latch >> sh_c;
-        x_nep = z32;
-        x_ndt = z32;
-        x_nep = x_nep >> sh_one;
-        if (nep[0]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[0]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[1]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[1]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[2]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[2]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[3]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[3]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[4]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[4]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[5]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[5]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[6]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[6]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[7]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[7]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[8]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[8]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[9]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[9]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[10]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[10]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[11]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[11]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[12]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[12]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[13]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[13]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[14]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[14]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[15]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[15]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[16]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[16]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[17]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[17]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[18]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[18]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[19]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[19]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[20]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[20]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[21]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[21]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[22]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[22]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_one;
-        if (nep[23]) begin
-            x_nep = x_nep | msb32;
-        end
-        x_ndt = x_ndt >> sh_one;
-        if (ndt[23]) begin
-            x_ndt = x_ndt | msb32;
-        end
-        x_nep = x_nep >> sh_n;
-        x_ndt = x_ndt >> sh_n;
-        x_glitch = z32;
-        x_illegal = z32;
-        x_rev = z32;
-        t_glitch = glitch_count;
-        t_illegal = illegal_count;
-        t_rev = rev_error_count;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_one;
-        if ((t_glitch & g_one) != g_zero) begin
-            x_glitch = x_glitch | msb32;
-        end
-        t_glitch = t_glitch >> sh_one;
-        x_illegal = x_illegal >> sh_one;
-        if ((t_illegal & g_one) != g_zero) begin
-            x_illegal = x_illegal | msb32;
-        end
-        t_illegal = t_illegal >> sh_one;
-        x_rev = x_rev >> sh_one;
-        if ((t_rev & g_one) != g_zero) begin
-            x_rev = x_rev | msb32;
-        end
-        t_rev = t_rev >> sh_one;
-        x_glitch = x_glitch >> sh_g;
-        x_illegal = x_illegal >> sh_g;
-        x_rev = x_rev >> sh_g;
-        x_n1 = z64;
-        x_n2 = z64;
-        x_n3 = z64;
-        x_pc = z64;
-        x_et = z64;
-        x_mt = z64;
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[0]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[0]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[0]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[0]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[0]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[0]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[1]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[1]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[1]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[1]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[1]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[1]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[2]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[2]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[2]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[2]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[2]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[2]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[3]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[3]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[3]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[3]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[3]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[3]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[4]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[4]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[4]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[4]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[4]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[4]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[5]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[5]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[5]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[5]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[5]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[5]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[6]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[6]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[6]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[6]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[6]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[6]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[7]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[7]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[7]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[7]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[7]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[7]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[8]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[8]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[8]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[8]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[8]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[8]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[9]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[9]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[9]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[9]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[9]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[9]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[10]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[10]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[10]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[10]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[10]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[10]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[11]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[11]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[11]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[11]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[11]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[11]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[12]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[12]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[12]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[12]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[12]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[12]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[13]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[13]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[13]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[13]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[13]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[13]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[14]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[14]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[14]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[14]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[14]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[14]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[15]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[15]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[15]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[15]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[15]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[15]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[16]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[16]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[16]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[16]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[16]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[16]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[17]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[17]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[17]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[17]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[17]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[17]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[18]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[18]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[18]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[18]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[18]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[18]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[19]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[19]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[19]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[19]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[19]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[19]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[20]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[20]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[20]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[20]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[20]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[20]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[21]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[21]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[21]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[21]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[21]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[21]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[22]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[22]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[22]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[22]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[22]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[22]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[23]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[23]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[23]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[23]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[23]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[23]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[24]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[24]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[24]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[24]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[24]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[24]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[25]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[25]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[25]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[25]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[25]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[25]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[26]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[26]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[26]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[26]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[26]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[26]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[27]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[27]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[27]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[27]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[27]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[27]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[28]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[28]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[28]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[28]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[28]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[28]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[29]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[29]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[29]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[29]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[29]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[29]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[30]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[30]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[30]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[30]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[30]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[30]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[31]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[31]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[31]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[31]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[31]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[31]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[32]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[32]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[32]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[32]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[32]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[32]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[33]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[33]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[33]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[33]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[33]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[33]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[34]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[34]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[34]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[34]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[34]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[34]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[35]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[35]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[35]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[35]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[35]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[35]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[36]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[36]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[36]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[36]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[36]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[36]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[37]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[37]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[37]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[37]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[37]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[37]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[38]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[38]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[38]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[38]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[38]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[38]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[39]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[39]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[39]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[39]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[39]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[39]) begin
-            x_mt = x_mt | msb64;
-        end
-        x_n1 = x_n1 >> sh_one;
-        if (speed_n1[40]) begin
-            x_n1 = x_n1 | msb64;
-        end
-        x_n2 = x_n2 >> sh_one;
-        if (speed_n2[40]) begin
-            x_n2 = x_n2 | msb64;
-        end
-        x_n3 = x_n3 >> sh_one;
-        if (speed_n3[40]) begin
-            x_n3 = x_n3 | msb64;
-        end
-        x_pc = x_pc >> sh_one;
-        if (speed_pc[40]) begin
-            x_pc = x_pc | msb64;
-        end
-        x_et = x_et >> sh_one;
-        if (speed_et[40]) begin
-            x_et = x_et | msb64;
-        end
-        x_mt = x_mt >> sh_one;
-        if (speed_mt[40]) begin
-            x_mt = x_mt | msb64;
-        end
-        if ((x_n1 & msb64) != z64) begin
-            x_n1 = (x_n1 >> sh_s) | sext;
-        end
-        else begin
-            x_n1 = x_n1 >> sh_s;
-        end
-        if ((x_n2 & msb64) != z64) begin
-            x_n2 = (x_n2 >> sh_s) | sext;
-        end
-        else begin
-            x_n2 = x_n2 >> sh_s;
-        end
-        if ((x_n3 & msb64) != z64) begin
-            x_n3 = (x_n3 >> sh_s) | sext;
-        end
-        else begin
-            x_n3 = x_n3 >> sh_s;
-        end
-        if ((x_pc & msb64) != z64) begin
-            x_pc = (x_pc >> sh_s) | sext;
-        end
-        else begin
-            x_pc = x_pc >> sh_s;
-        end
-        if ((x_et & msb64) != z64) begin
-            x_et = (x_et >> sh_s) | sext;
-        end
-        else begin
-            x_et = x_et >> sh_s;
-        end
-        if ((x_mt & msb64) != z64) begin
-            x_mt = (x_mt >> sh_s) | sext;
-        end
-        else begin
-            x_mt = x_mt >> sh_s;
-        end
-        adr = wb_adr_i & adr_mask;
-        req = wb_cyc_i & wb_stb_i & (~ack$q);
-        rd = req & (~wb_we_i);
-        wr = req & wb_we_i;
-        lanes = z32;
-        if (wb_sel_i[32'h0]) begin
-            lanes = lanes | lane0;
-        end
-        if (wb_sel_i[32'h1]) begin
-            lanes = lanes | lane1;
-        end
-        if (wb_sel_i[32'h2]) begin
-            lanes = lanes | lane2;
-        end
-        if (wb_sel_i[32'h3]) begin
-            lanes = lanes | lane3;
-        end
-        ones = wb_dat_i & lanes;
-        rdata = z32;
-        if (adr == a_id) begin
-            rdata = k_id;
-        end
-        if (adr == a_version) begin
-            rdata = k_version;
-        end
-        if (adr == a_param0) begin
-            rdata = k_param0;
-        end
-        if (adr == a_param1) begin
-            rdata = k_param1;
-        end
-        if (adr == a_lines) begin
-            rdata = k_lines;
-        end
-        if (adr == a_dt_default) begin
-            rdata = k_dt_default;
-        end
-        if (adr == a_timeout_default) begin
-            rdata = k_timeout_default;
-        end
-        if (adr == a_clock_hz) begin
-            rdata = k_clock_hz;
-        end
-        if (adr == a_ctrl) begin
-            rdata = ctrl$q;
-        end
-        if (adr == a_cfg_dt) begin
-            rdata = r_cfg_dt$q;
-        end
-        if (adr == a_cfg_timeout) begin
-            rdata = r_cfg_timeout$q;
-        end
-        if (adr == a_cfg_filter) begin
-            rdata = r_cfg_filter$q;
-        end
-        if (adr == a_status) begin
-            if (valid) begin
-                rdata = rdata | s_valid;
-            end
-            if (stalled) begin
-                rdata = rdata | s_stalled;
-            end
-            if (direction) begin
-                rdata = rdata | s_direction;
-            end
-            if (cfg_error) begin
-                rdata = rdata | s_cfg_error;
-            end
-            if (fault_illegal) begin
-                rdata = rdata | s_fault_illegal;
-            end
-            if (fault_overspeed) begin
-                rdata = rdata | s_fault_overspeed;
-            end
-            if (fault_revolution) begin
-                rdata = rdata | s_fault_revolution;
-            end
-        end
-        if (adr == a_irq_enable) begin
-            rdata = irq_enable$q;
-        end
-        if (adr == a_irq_status) begin
-            rdata = irq_status$q;
-        end
-        if (adr == a_position) begin
-            rdata = x_position;
-        end
-        if (adr == a_z_latch) begin
-            rdata = x_z_latch;
-        end
-        if (adr == a_nep) begin
-            rdata = x_nep;
-        end
-        if (adr == a_ndt) begin
-            rdata = x_ndt;
-        end
-        if (adr == a_n1_lo) begin
-            rdata = x_n1[(32'h0)+:(32)];
-        end
-        if (adr == a_n1_hi) begin
-            rdata = hi_n1$q;
-        end
-        if (adr == a_n2_lo) begin
-            rdata = x_n2[(32'h0)+:(32)];
-        end
-        if (adr == a_n2_hi) begin
-            rdata = hi_n2$q;
-        end
-        if (adr == a_n3_lo) begin
-            rdata = x_n3[(32'h0)+:(32)];
-        end
-        if (adr == a_n3_hi) begin
-            rdata = hi_n3$q;
-        end
-        if (adr == a_pc_lo) begin
-            rdata = x_pc[(32'h0)+:(32)];
-        end
-        if (adr == a_pc_hi) begin
-            rdata = hi_pc$q;
-        end
-        if (adr == a_et_lo) begin
-            rdata = x_et[(32'h0)+:(32)];
-        end
-        if (adr == a_et_hi) begin
-            rdata = hi_et$q;
-        end
-        if (adr == a_mt_lo) begin
-            rdata = x_mt[(32'h0)+:(32)];
-        end
-        if (adr == a_mt_hi) begin
-            rdata = hi_mt$q;
-        end
-        if (adr == a_glitch) begin
-            rdata = x_glitch;
-        end
-        if (adr == a_illegal) begin
-            rdata = x_illegal;
-        end
-        if (adr == a_rev) begin
-            rdata = x_rev;
-        end
-        ack$d = req;
-        dat$d = z32;
-        if (rd) begin
-            dat$d = rdata;
-            if (adr == a_n1_lo) begin
-                hi_n1$d = x_n1[(32'h20)+:(32)];
-            end
-            if (adr == a_n2_lo) begin
-                hi_n2$d = x_n2[(32'h20)+:(32)];
-            end
-            if (adr == a_n3_lo) begin
-                hi_n3$d = x_n3[(32'h20)+:(32)];
-            end
-            if (adr == a_pc_lo) begin
-                hi_pc$d = x_pc[(32'h20)+:(32)];
-            end
-            if (adr == a_et_lo) begin
-                hi_et$d = x_et[(32'h20)+:(32)];
-            end
-            if (adr == a_mt_lo) begin
-                hi_mt$d = x_mt[(32'h20)+:(32)];
-            end
-        end
-        irq_clear = z32;
-        clear$d = 1'b0;
-        if (wr) begin
-            if (adr == a_ctrl) begin
-                ctrl$d = ((ctrl$q & (~lanes)) | ones) & m_ctrl;
-            end
-            if (adr == a_cfg_dt) begin
-                r_cfg_dt$d = ((r_cfg_dt$q & (~lanes)) | ones) & m_cfg_dt;
-            end
-            if (adr == a_cfg_timeout) begin
-                r_cfg_timeout$d = ((r_cfg_timeout$q & (~lanes)) | ones) & m_cfg_timeout;
-            end
-            if (adr == a_cfg_filter) begin
-                r_cfg_filter$d = ((r_cfg_filter$q & (~lanes)) | ones) & m_cfg_filter;
-            end
-            if (adr == a_irq_enable) begin
-                irq_enable$d = ((irq_enable$q & (~lanes)) | ones) & m_irq_enable;
-            end
-            if (adr == a_irq_status) begin
-                irq_clear = ones & m_irq_w1c;
-            end
-            if (adr == a_status) begin
-                clear$d = (ones & m_fault_w1c) != z32;
-            end
-        end
+        file$clock = clock;
+        ctrl$clock = clock;
+        r_cfg_dt$clock = clock;
+        r_cfg_timeout$clock = clock;
+        r_cfg_filter$clock = clock;
+        fault_clear$clock = clock;
+        n1$clock = clock;
+        n2$clock = clock;
+        n3$clock = clock;
+        pc$clock = clock;
+        et$clock = clock;
+        mt$clock = clock;
+        file$reset = reset;
+        file$wb_cyc_i = wb_cyc_i;
+        file$wb_stb_i = wb_stb_i;
+        file$wb_we_i = wb_we_i;
+        file$wb_adr_i = wb_adr_i;
+        file$wb_dat_i = wb_dat_i;
+        file$wb_sel_i = wb_sel_i;
+        wb_ack_o = file$wb_ack_o;
+        wb_dat_o = file$wb_dat_o;
+        irq = file$irq;
+        id$adr = file$adr;
+        version$adr = file$adr;
+        param0$adr = file$adr;
+        param1$adr = file$adr;
+        lines$adr = file$adr;
+        dt_default$adr = file$adr;
+        timeout_default$adr = file$adr;
+        clock_hz$adr = file$adr;
+        ctrl$reset = reset;
+        ctrl$adr = file$adr;
+        ctrl$wr = file$wr;
+        ctrl$lanes = file$lanes;
+        ctrl$ones = file$ones;
+        r_cfg_dt$reset = reset;
+        r_cfg_dt$adr = file$adr;
+        r_cfg_dt$wr = file$wr;
+        r_cfg_dt$lanes = file$lanes;
+        r_cfg_dt$ones = file$ones;
+        r_cfg_timeout$reset = reset;
+        r_cfg_timeout$adr = file$adr;
+        r_cfg_timeout$wr = file$wr;
+        r_cfg_timeout$lanes = file$lanes;
+        r_cfg_timeout$ones = file$ones;
+        r_cfg_filter$reset = reset;
+        r_cfg_filter$adr = file$adr;
+        r_cfg_filter$wr = file$wr;
+        r_cfg_filter$lanes = file$lanes;
+        r_cfg_filter$ones = file$ones;
+        cfg_dt = r_cfg_dt$q;
+        cfg_timeout = r_cfg_timeout$q;
+        cfg_filter = r_cfg_filter$q;
+        cfg_mode = ctrl$q[(0)+:(2)];
+        cfg_z_mode = ctrl$q[(2)+:(2)];
+        status_word = z32;
+        if (valid) begin
+            status_word = status_word | s_valid;
+        end
+        if (stalled) begin
+            status_word = status_word | s_stalled;
+        end
+        if (direction) begin
+            status_word = status_word | s_direction;
+        end
+        if (cfg_error) begin
+            status_word = status_word | s_cfg_error;
+        end
+        if (fault_illegal) begin
+            status_word = status_word | s_fault_illegal;
+        end
+        if (fault_overspeed) begin
+            status_word = status_word | s_fault_overspeed;
+        end
+        if (fault_revolution) begin
+            status_word = status_word | s_fault_revolution;
+        end
+        status$adr = file$adr;
+        status$value = status_word;
+        fault_clear$reset = reset;
+        fault_clear$adr = file$adr;
+        fault_clear$wr = file$wr;
+        fault_clear$ones = file$ones;
+        clear_faults = fault_clear$pulse;
+        r_position$adr = file$adr;
+        r_position$value = position;
+        r_z_latch$adr = file$adr;
+        r_z_latch$value = z_latch;
+        r_nep$adr = file$adr;
+        r_nep$value = nep;
+        r_ndt$adr = file$adr;
+        r_ndt$value = ndt;
+        glitch$adr = file$adr;
+        glitch$value = glitch_count;
+        illegal$adr = file$adr;
+        illegal$value = illegal_count;
+        rev$adr = file$adr;
+        rev$value = rev_error_count;
+        n1$reset = reset;
+        n1$adr = file$adr;
+        n1$rd = file$rd;
+        n1$value = speed_n1;
+        n2$reset = reset;
+        n2$adr = file$adr;
+        n2$rd = file$rd;
+        n2$value = speed_n2;
+        n3$reset = reset;
+        n3$adr = file$adr;
+        n3$rd = file$rd;
+        n3$value = speed_n3;
+        pc$reset = reset;
+        pc$adr = file$adr;
+        pc$rd = file$rd;
+        pc$value = speed_pc;
+        et$reset = reset;
+        et$adr = file$adr;
+        et$rd = file$rd;
+        et$value = speed_et;
+        mt$reset = reset;
+        mt$adr = file$adr;
+        mt$rd = file$rd;
+        mt$value = speed_mt;
+        file$cells = id$rdata | version$rdata | param0$rdata | param1$rdata | lines$rdata | dt_default$rdata | timeout_default$rdata | clock_hz$rdata | ctrl$rdata | r_cfg_dt$rdata | r_cfg_timeout$rdata | r_cfg_filter$rdata | status$rdata | r_position$rdata | r_z_latch$rdata | r_nep$rdata | r_ndt$rdata | n1$rdata | n2$rdata | n3$rdata | pc$rdata | et$rdata | mt$rdata | glitch$rdata | illegal$rdata | rev$rdata;
         fault_rose = (fault_illegal & (~prev_illegal$q)) | (fault_overspeed & (~prev_overspeed$q)) | (fault_revolution & (~prev_revolution$q));
         events = z32;
         if (speed_strobe) begin
@@ -24052,104 +22391,94 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
         if (stalled & (~prev_stalled$q)) begin
             events = events | e_stall;
         end
-        irq_status$d = (irq_status$q & (~irq_clear)) | events;
+        file$events = events;
         prev_illegal$d = fault_illegal;
         prev_overspeed$d = fault_overspeed;
         prev_revolution$d = fault_revolution;
         prev_stalled$d = stalled;
         if (reset) begin
-            ack$d = 1'b0;
-            dat$d = z32;
-            ctrl$d = z32;
-            r_cfg_dt$d = z32;
-            r_cfg_timeout$d = z32;
-            r_cfg_filter$d = z32;
-            irq_enable$d = z32;
-            irq_status$d = z32;
-            hi_n1$d = z32;
-            hi_n2$d = z32;
-            hi_n3$d = z32;
-            hi_pc$d = z32;
-            hi_et$d = z32;
-            hi_mt$d = z32;
-            clear$d = 1'b0;
             prev_illegal$d = 1'b0;
             prev_overspeed$d = 1'b0;
             prev_revolution$d = 1'b0;
             prev_stalled$d = 1'b0;
         end
-        wb_ack_o = ack$q;
-        wb_dat_o = dat$q;
-        irq = (irq_status$q & irq_enable$q) != z32;
-        cfg_dt = r_cfg_dt$q[(32'h0)+:(24)];
-        cfg_timeout = r_cfg_timeout$q[(32'h0)+:(24)];
-        cfg_filter = r_cfg_filter$q[(32'h0)+:(16)];
-        cfg_mode = ctrl$q[(0)+:(2)];
-        cfg_z_mode = ctrl$q[(2)+:(2)];
-        clear_faults = clear$q;
     end
     
 endmodule // encspeed_ecc_wb$regs
 
 
-module encspeed_ecc_wb$regs$ack(d,q,clock);
+module encspeed_ecc_wb$regs$clock_hz(adr,rdata);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
     
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
+    // Constant declarations
+    localparam  offset = 8'h1c;
+    localparam  value = 32'h5f5e100;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_ecc_wb$regs$ack
+endmodule // encspeed_ecc_wb$regs$clock_hz
 
 
-module encspeed_ecc_wb$regs$clear(d,q,clock);
+module encspeed_ecc_wb$regs$ctrl(clock,reset,adr,wr,lanes,ones,rdata,q);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
     input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] lanes;
+    input wire  [31:0] ones;
+    output reg  [31:0] rdata;
+    output reg  [3:0] q;
     
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
+    // Constant declarations
+    localparam  offset = 8'h20;
+    localparam  mask = 32'hf;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] word$d;
+    wire  [31:0] word$q;
+    reg  word$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$ctrl$word word(
+        .d(word$d),
+        .q(word$q),
+        .clock(word$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        word$clock = clock;
+        word$d = word$q;
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = word$q;
+            if (wr) begin
+                word$d = ((word$q & (~lanes)) | ones) & mask;
+            end
+        end
+        if (reset) begin
+            word$d = z32;
+        end
+        q = word$q[(32'h0)+:(4)];
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_ecc_wb$regs$clear
-
-
-module encspeed_ecc_wb$regs$ctrl(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
 endmodule // encspeed_ecc_wb$regs$ctrl
 
 
-module encspeed_ecc_wb$regs$dat(d,q,clock);
+module encspeed_ecc_wb$regs$ctrl$word(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24165,10 +22494,260 @@ module encspeed_ecc_wb$regs$dat(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$dat
+endmodule // encspeed_ecc_wb$regs$ctrl$word
 
 
-module encspeed_ecc_wb$regs$hi_et(d,q,clock);
+module encspeed_ecc_wb$regs$dt_default(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h14;
+    localparam  value = 32'h186a0;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$dt_default
+
+
+module encspeed_ecc_wb$regs$et(clock,reset,adr,rd,value,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  rd;
+    input wire  [40:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  a_lo = 8'h70;
+    localparam  a_hi = 8'h74;
+    localparam  z32 = 32'h0;
+    localparam  z64 = 64'h0;
+    localparam  msb64 = 64'h8000000000000000;
+    localparam  sext = 64'hfffffe0000000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_s = 8'h17;
+    
+    // Stub signals
+    reg  [31:0] hi$d;
+    wire  [31:0] hi$q;
+    reg  hi$clock;
+    
+    // Local signals
+    reg  [63:0] x;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$et$hi hi(
+        .d(hi$d),
+        .q(hi$q),
+        .clock(hi$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hi$clock = clock;
+        hi$d = hi$q;
+        x = z64;
+        x = x >> sh_one;
+        if (value[0]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[1]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[2]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[3]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[4]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[5]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[6]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[7]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[8]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[9]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[10]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[11]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[12]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[13]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[14]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[15]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[16]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[17]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[18]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[19]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[20]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[21]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[22]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[23]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[24]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[25]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[26]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[27]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[28]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[29]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[30]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[31]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[32]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[33]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[34]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[35]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[36]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[37]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[38]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[39]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[40]) begin
+            x = x | msb64;
+        end
+        if ((x & msb64) != z64) begin
+            x = (x >> sh_s) | sext;
+        end
+        else begin
+            x = x >> sh_s;
+        end
+        rdata = z32;
+        if (adr == a_lo) begin
+            rdata = x[(32'h0)+:(32)];
+            if (rd) begin
+                hi$d = x[(32'h20)+:(32)];
+            end
+        end
+        if (adr == a_hi) begin
+            rdata = hi$q;
+        end
+        if (reset) begin
+            hi$d = z32;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$et
+
+
+module encspeed_ecc_wb$regs$et$hi(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24184,10 +22763,360 @@ module encspeed_ecc_wb$regs$hi_et(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$hi_et
+endmodule // encspeed_ecc_wb$regs$et$hi
 
 
-module encspeed_ecc_wb$regs$hi_mt(d,q,clock);
+module encspeed_ecc_wb$regs$fault_clear(clock,reset,adr,wr,ones,pulse);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] ones;
+    output reg  pulse;
+    
+    // Constant declarations
+    localparam  offset = 8'h30;
+    localparam  mask = 32'h70;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  fired$d;
+    wire  fired$q;
+    reg  fired$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$fault_clear$fired fired(
+        .d(fired$d),
+        .q(fired$q),
+        .clock(fired$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        fired$clock = clock;
+        fired$d = fired$q;
+        fired$d = wr & (adr == offset) & ((ones & mask) != z32);
+        if (reset) begin
+            fired$d = 1'b0;
+        end
+        pulse = fired$q;
+    end
+    
+endmodule // encspeed_ecc_wb$regs$fault_clear
+
+
+module encspeed_ecc_wb$regs$fault_clear$fired(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$fault_clear$fired
+
+
+module encspeed_ecc_wb$regs$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,events,cells,adr,rd,wr,lanes,ones);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  wb_cyc_i;
+    input wire  wb_stb_i;
+    input wire  wb_we_i;
+    input wire  [7:0] wb_adr_i;
+    input wire  [31:0] wb_dat_i;
+    input wire  [3:0] wb_sel_i;
+    output reg  [31:0] wb_dat_o;
+    output reg  wb_ack_o;
+    output reg  irq;
+    input wire  [31:0] events;
+    input wire  [31:0] cells;
+    output reg  [7:0] adr;
+    output reg  rd;
+    output reg  wr;
+    output reg  [31:0] lanes;
+    output reg  [31:0] ones;
+    
+    // Stub signals
+    reg  front$clock;
+    reg  front$reset;
+    reg  front$wb_cyc_i;
+    reg  front$wb_stb_i;
+    reg  front$wb_we_i;
+    reg  [7:0] front$wb_adr_i;
+    reg  [31:0] front$wb_dat_i;
+    reg  [3:0] front$wb_sel_i;
+    wire  front$wb_ack_o;
+    wire  [7:0] front$adr;
+    wire  front$rd;
+    wire  front$wr;
+    wire  [31:0] front$lanes;
+    wire  [31:0] front$ones;
+    reg  irqs$clock;
+    reg  irqs$reset;
+    reg  [7:0] irqs$adr;
+    reg  irqs$wr;
+    reg  [31:0] irqs$lanes;
+    reg  [31:0] irqs$ones;
+    reg  [31:0] irqs$events;
+    wire  [31:0] irqs$rdata;
+    wire  irqs$irq;
+    reg  read$clock;
+    reg  read$reset;
+    reg  read$rd;
+    reg  [31:0] read$cells;
+    wire  [31:0] read$wb_dat_o;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$file$front front(
+        .clock(front$clock),
+        .reset(front$reset),
+        .wb_cyc_i(front$wb_cyc_i),
+        .wb_stb_i(front$wb_stb_i),
+        .wb_we_i(front$wb_we_i),
+        .wb_adr_i(front$wb_adr_i),
+        .wb_dat_i(front$wb_dat_i),
+        .wb_sel_i(front$wb_sel_i),
+        .wb_ack_o(front$wb_ack_o),
+        .adr(front$adr),
+        .rd(front$rd),
+        .wr(front$wr),
+        .lanes(front$lanes),
+        .ones(front$ones)
+    );
+    encspeed_ecc_wb$regs$file$irqs irqs(
+        .clock(irqs$clock),
+        .reset(irqs$reset),
+        .adr(irqs$adr),
+        .wr(irqs$wr),
+        .lanes(irqs$lanes),
+        .ones(irqs$ones),
+        .events(irqs$events),
+        .rdata(irqs$rdata),
+        .irq(irqs$irq)
+    );
+    encspeed_ecc_wb$regs$file$read read(
+        .clock(read$clock),
+        .reset(read$reset),
+        .rd(read$rd),
+        .cells(read$cells),
+        .wb_dat_o(read$wb_dat_o)
+    );
+    
+    // Update code
+    always @(*) begin
+        front$clock = clock;
+        irqs$clock = clock;
+        read$clock = clock;
+        front$reset = reset;
+        front$wb_cyc_i = wb_cyc_i;
+        front$wb_stb_i = wb_stb_i;
+        front$wb_we_i = wb_we_i;
+        front$wb_adr_i = wb_adr_i;
+        front$wb_dat_i = wb_dat_i;
+        front$wb_sel_i = wb_sel_i;
+        wb_ack_o = front$wb_ack_o;
+        adr = front$adr;
+        rd = front$rd;
+        wr = front$wr;
+        lanes = front$lanes;
+        ones = front$ones;
+        irqs$reset = reset;
+        irqs$adr = front$adr;
+        irqs$wr = front$wr;
+        irqs$lanes = front$lanes;
+        irqs$ones = front$ones;
+        irqs$events = events;
+        irq = irqs$irq;
+        read$reset = reset;
+        read$rd = front$rd;
+        read$cells = cells | irqs$rdata;
+        wb_dat_o = read$wb_dat_o;
+    end
+    
+endmodule // encspeed_ecc_wb$regs$file
+
+
+module encspeed_ecc_wb$regs$file$front(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_ack_o,adr,rd,wr,lanes,ones);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  wb_cyc_i;
+    input wire  wb_stb_i;
+    input wire  wb_we_i;
+    input wire  [7:0] wb_adr_i;
+    input wire  [31:0] wb_dat_i;
+    input wire  [3:0] wb_sel_i;
+    output reg  wb_ack_o;
+    output reg  [7:0] adr;
+    output reg  rd;
+    output reg  wr;
+    output reg  [31:0] lanes;
+    output reg  [31:0] ones;
+    
+    // Constant declarations
+    localparam  adr_mask = 8'hfc;
+    localparam  lane0 = 32'hff;
+    localparam  lane1 = 32'hff00;
+    localparam  lane2 = 32'hff0000;
+    localparam  lane3 = 32'hff000000;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  ack$d;
+    wire  ack$q;
+    reg  ack$clock;
+    
+    // Local signals
+    reg  req;
+    reg  [31:0] l_lanes;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$file$front$ack ack(
+        .d(ack$d),
+        .q(ack$q),
+        .clock(ack$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ack$clock = clock;
+        ack$d = ack$q;
+        req = wb_cyc_i & wb_stb_i & (~ack$q);
+        ack$d = req;
+        if (reset) begin
+            ack$d = 1'b0;
+        end
+        l_lanes = z32;
+        if (wb_sel_i[32'h0]) begin
+            l_lanes = l_lanes | lane0;
+        end
+        if (wb_sel_i[32'h1]) begin
+            l_lanes = l_lanes | lane1;
+        end
+        if (wb_sel_i[32'h2]) begin
+            l_lanes = l_lanes | lane2;
+        end
+        if (wb_sel_i[32'h3]) begin
+            l_lanes = l_lanes | lane3;
+        end
+        wb_ack_o = ack$q;
+        adr = wb_adr_i & adr_mask;
+        rd = req & (~wb_we_i);
+        wr = req & wb_we_i;
+        lanes = l_lanes;
+        ones = wb_dat_i & l_lanes;
+    end
+    
+endmodule // encspeed_ecc_wb$regs$file$front
+
+
+module encspeed_ecc_wb$regs$file$front$ack(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$front$ack
+
+
+module encspeed_ecc_wb$regs$file$irqs(clock,reset,adr,wr,lanes,ones,events,rdata,irq);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] lanes;
+    input wire  [31:0] ones;
+    input wire  [31:0] events;
+    output reg  [31:0] rdata;
+    output reg  irq;
+    
+    // Constant declarations
+    localparam  a_enable = 8'h34;
+    localparam  a_status = 8'h38;
+    localparam  m_enable = 32'h3f;
+    localparam  m_w1c = 32'h3f;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] enable$d;
+    wire  [31:0] enable$q;
+    reg  enable$clock;
+    reg  [31:0] status$d;
+    wire  [31:0] status$q;
+    reg  status$clock;
+    
+    // Local signals
+    reg  [31:0] cleared;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$file$irqs$enable enable(
+        .d(enable$d),
+        .q(enable$q),
+        .clock(enable$clock)
+    );
+    encspeed_ecc_wb$regs$file$irqs$status status(
+        .d(status$d),
+        .q(status$q),
+        .clock(status$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        enable$clock = clock;
+        status$clock = clock;
+        enable$d = enable$q;
+        status$d = status$q;
+        rdata = z32;
+        cleared = z32;
+        if (adr == a_enable) begin
+            rdata = enable$q;
+            if (wr) begin
+                enable$d = ((enable$q & (~lanes)) | ones) & m_enable;
+            end
+        end
+        if (adr == a_status) begin
+            rdata = status$q;
+            if (wr) begin
+                cleared = ones & m_w1c;
+            end
+        end
+        status$d = (status$q & (~cleared)) | events;
+        if (reset) begin
+            enable$d = z32;
+            status$d = z32;
+        end
+        irq = (status$q & enable$q) != z32;
+    end
+    
+endmodule // encspeed_ecc_wb$regs$file$irqs
+
+
+module encspeed_ecc_wb$regs$file$irqs$enable(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24203,10 +23132,10 @@ module encspeed_ecc_wb$regs$hi_mt(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$hi_mt
+endmodule // encspeed_ecc_wb$regs$file$irqs$enable
 
 
-module encspeed_ecc_wb$regs$hi_n1(d,q,clock);
+module encspeed_ecc_wb$regs$file$irqs$status(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24222,10 +23151,48 @@ module encspeed_ecc_wb$regs$hi_n1(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$hi_n1
+endmodule // encspeed_ecc_wb$regs$file$irqs$status
 
 
-module encspeed_ecc_wb$regs$hi_n2(d,q,clock);
+module encspeed_ecc_wb$regs$file$read(clock,reset,rd,cells,wb_dat_o);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  rd;
+    input wire  [31:0] cells;
+    output reg  [31:0] wb_dat_o;
+    
+    // Constant declarations
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] dat$d;
+    wire  [31:0] dat$q;
+    reg  dat$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$file$read$dat dat(
+        .d(dat$d),
+        .q(dat$q),
+        .clock(dat$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dat$clock = clock;
+        dat$d = dat$q;
+        dat$d = z32;
+        if (rd & (~reset)) begin
+            dat$d = cells;
+        end
+        wb_dat_o = dat$q;
+    end
+    
+endmodule // encspeed_ecc_wb$regs$file$read
+
+
+module encspeed_ecc_wb$regs$file$read$dat(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24241,10 +23208,522 @@ module encspeed_ecc_wb$regs$hi_n2(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$hi_n2
+endmodule // encspeed_ecc_wb$regs$file$read$dat
 
 
-module encspeed_ecc_wb$regs$hi_n3(d,q,clock);
+module encspeed_ecc_wb$regs$glitch(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [15:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h80;
+    localparam  w_one = 16'h1;
+    localparam  w_zero = 16'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h8000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h10;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [15:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$glitch
+
+
+module encspeed_ecc_wb$regs$id(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h0;
+    localparam  value = 32'h454e4353;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$id
+
+
+module encspeed_ecc_wb$regs$illegal(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [15:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h84;
+    localparam  w_one = 16'h1;
+    localparam  w_zero = 16'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h8000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h10;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [15:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$illegal
+
+
+module encspeed_ecc_wb$regs$lines(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h10;
+    localparam  value = 32'h400;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$lines
+
+
+module encspeed_ecc_wb$regs$mt(clock,reset,adr,rd,value,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  rd;
+    input wire  [40:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  a_lo = 8'h78;
+    localparam  a_hi = 8'h7c;
+    localparam  z32 = 32'h0;
+    localparam  z64 = 64'h0;
+    localparam  msb64 = 64'h8000000000000000;
+    localparam  sext = 64'hfffffe0000000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_s = 8'h17;
+    
+    // Stub signals
+    reg  [31:0] hi$d;
+    wire  [31:0] hi$q;
+    reg  hi$clock;
+    
+    // Local signals
+    reg  [63:0] x;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$mt$hi hi(
+        .d(hi$d),
+        .q(hi$q),
+        .clock(hi$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hi$clock = clock;
+        hi$d = hi$q;
+        x = z64;
+        x = x >> sh_one;
+        if (value[0]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[1]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[2]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[3]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[4]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[5]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[6]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[7]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[8]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[9]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[10]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[11]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[12]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[13]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[14]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[15]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[16]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[17]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[18]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[19]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[20]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[21]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[22]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[23]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[24]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[25]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[26]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[27]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[28]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[29]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[30]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[31]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[32]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[33]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[34]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[35]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[36]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[37]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[38]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[39]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[40]) begin
+            x = x | msb64;
+        end
+        if ((x & msb64) != z64) begin
+            x = (x >> sh_s) | sext;
+        end
+        else begin
+            x = x >> sh_s;
+        end
+        rdata = z32;
+        if (adr == a_lo) begin
+            rdata = x[(32'h0)+:(32)];
+            if (rd) begin
+                hi$d = x[(32'h20)+:(32)];
+            end
+        end
+        if (adr == a_hi) begin
+            rdata = hi$q;
+        end
+        if (reset) begin
+            hi$d = z32;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$mt
+
+
+module encspeed_ecc_wb$regs$mt$hi(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24260,10 +23739,238 @@ module encspeed_ecc_wb$regs$hi_n3(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$hi_n3
+endmodule // encspeed_ecc_wb$regs$mt$hi
 
 
-module encspeed_ecc_wb$regs$hi_pc(d,q,clock);
+module encspeed_ecc_wb$regs$n1(clock,reset,adr,rd,value,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  rd;
+    input wire  [40:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  a_lo = 8'h50;
+    localparam  a_hi = 8'h54;
+    localparam  z32 = 32'h0;
+    localparam  z64 = 64'h0;
+    localparam  msb64 = 64'h8000000000000000;
+    localparam  sext = 64'hfffffe0000000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_s = 8'h17;
+    
+    // Stub signals
+    reg  [31:0] hi$d;
+    wire  [31:0] hi$q;
+    reg  hi$clock;
+    
+    // Local signals
+    reg  [63:0] x;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$n1$hi hi(
+        .d(hi$d),
+        .q(hi$q),
+        .clock(hi$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hi$clock = clock;
+        hi$d = hi$q;
+        x = z64;
+        x = x >> sh_one;
+        if (value[0]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[1]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[2]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[3]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[4]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[5]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[6]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[7]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[8]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[9]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[10]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[11]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[12]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[13]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[14]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[15]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[16]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[17]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[18]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[19]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[20]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[21]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[22]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[23]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[24]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[25]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[26]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[27]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[28]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[29]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[30]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[31]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[32]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[33]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[34]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[35]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[36]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[37]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[38]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[39]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[40]) begin
+            x = x | msb64;
+        end
+        if ((x & msb64) != z64) begin
+            x = (x >> sh_s) | sext;
+        end
+        else begin
+            x = x >> sh_s;
+        end
+        rdata = z32;
+        if (adr == a_lo) begin
+            rdata = x[(32'h0)+:(32)];
+            if (rd) begin
+                hi$d = x[(32'h20)+:(32)];
+            end
+        end
+        if (adr == a_hi) begin
+            rdata = hi$q;
+        end
+        if (reset) begin
+            hi$d = z32;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$n1
+
+
+module encspeed_ecc_wb$regs$n1$hi(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24279,10 +23986,238 @@ module encspeed_ecc_wb$regs$hi_pc(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$hi_pc
+endmodule // encspeed_ecc_wb$regs$n1$hi
 
 
-module encspeed_ecc_wb$regs$irq_enable(d,q,clock);
+module encspeed_ecc_wb$regs$n2(clock,reset,adr,rd,value,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  rd;
+    input wire  [40:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  a_lo = 8'h58;
+    localparam  a_hi = 8'h5c;
+    localparam  z32 = 32'h0;
+    localparam  z64 = 64'h0;
+    localparam  msb64 = 64'h8000000000000000;
+    localparam  sext = 64'hfffffe0000000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_s = 8'h17;
+    
+    // Stub signals
+    reg  [31:0] hi$d;
+    wire  [31:0] hi$q;
+    reg  hi$clock;
+    
+    // Local signals
+    reg  [63:0] x;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$n2$hi hi(
+        .d(hi$d),
+        .q(hi$q),
+        .clock(hi$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hi$clock = clock;
+        hi$d = hi$q;
+        x = z64;
+        x = x >> sh_one;
+        if (value[0]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[1]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[2]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[3]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[4]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[5]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[6]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[7]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[8]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[9]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[10]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[11]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[12]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[13]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[14]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[15]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[16]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[17]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[18]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[19]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[20]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[21]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[22]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[23]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[24]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[25]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[26]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[27]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[28]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[29]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[30]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[31]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[32]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[33]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[34]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[35]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[36]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[37]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[38]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[39]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[40]) begin
+            x = x | msb64;
+        end
+        if ((x & msb64) != z64) begin
+            x = (x >> sh_s) | sext;
+        end
+        else begin
+            x = x >> sh_s;
+        end
+        rdata = z32;
+        if (adr == a_lo) begin
+            rdata = x[(32'h0)+:(32)];
+            if (rd) begin
+                hi$d = x[(32'h20)+:(32)];
+            end
+        end
+        if (adr == a_hi) begin
+            rdata = hi$q;
+        end
+        if (reset) begin
+            hi$d = z32;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$n2
+
+
+module encspeed_ecc_wb$regs$n2$hi(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24298,10 +24233,238 @@ module encspeed_ecc_wb$regs$irq_enable(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$irq_enable
+endmodule // encspeed_ecc_wb$regs$n2$hi
 
 
-module encspeed_ecc_wb$regs$irq_status(d,q,clock);
+module encspeed_ecc_wb$regs$n3(clock,reset,adr,rd,value,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  rd;
+    input wire  [40:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  a_lo = 8'h60;
+    localparam  a_hi = 8'h64;
+    localparam  z32 = 32'h0;
+    localparam  z64 = 64'h0;
+    localparam  msb64 = 64'h8000000000000000;
+    localparam  sext = 64'hfffffe0000000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_s = 8'h17;
+    
+    // Stub signals
+    reg  [31:0] hi$d;
+    wire  [31:0] hi$q;
+    reg  hi$clock;
+    
+    // Local signals
+    reg  [63:0] x;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$n3$hi hi(
+        .d(hi$d),
+        .q(hi$q),
+        .clock(hi$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hi$clock = clock;
+        hi$d = hi$q;
+        x = z64;
+        x = x >> sh_one;
+        if (value[0]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[1]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[2]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[3]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[4]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[5]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[6]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[7]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[8]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[9]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[10]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[11]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[12]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[13]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[14]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[15]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[16]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[17]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[18]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[19]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[20]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[21]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[22]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[23]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[24]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[25]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[26]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[27]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[28]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[29]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[30]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[31]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[32]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[33]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[34]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[35]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[36]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[37]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[38]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[39]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[40]) begin
+            x = x | msb64;
+        end
+        if ((x & msb64) != z64) begin
+            x = (x >> sh_s) | sext;
+        end
+        else begin
+            x = x >> sh_s;
+        end
+        rdata = z32;
+        if (adr == a_lo) begin
+            rdata = x[(32'h0)+:(32)];
+            if (rd) begin
+                hi$d = x[(32'h20)+:(32)];
+            end
+        end
+        if (adr == a_hi) begin
+            rdata = hi$q;
+        end
+        if (reset) begin
+            hi$d = z32;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$n3
+
+
+module encspeed_ecc_wb$regs$n3$hi(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24317,7 +24480,298 @@ module encspeed_ecc_wb$regs$irq_status(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$regs$irq_status
+endmodule // encspeed_ecc_wb$regs$n3$hi
+
+
+module encspeed_ecc_wb$regs$param0(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h8;
+    localparam  value = 32'h20291018;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$param0
+
+
+module encspeed_ecc_wb$regs$param1(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hc;
+    localparam  value = 32'h1010;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$param1
+
+
+module encspeed_ecc_wb$regs$pc(clock,reset,adr,rd,value,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  rd;
+    input wire  [40:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  a_lo = 8'h68;
+    localparam  a_hi = 8'h6c;
+    localparam  z32 = 32'h0;
+    localparam  z64 = 64'h0;
+    localparam  msb64 = 64'h8000000000000000;
+    localparam  sext = 64'hfffffe0000000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_s = 8'h17;
+    
+    // Stub signals
+    reg  [31:0] hi$d;
+    wire  [31:0] hi$q;
+    reg  hi$clock;
+    
+    // Local signals
+    reg  [63:0] x;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$pc$hi hi(
+        .d(hi$d),
+        .q(hi$q),
+        .clock(hi$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hi$clock = clock;
+        hi$d = hi$q;
+        x = z64;
+        x = x >> sh_one;
+        if (value[0]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[1]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[2]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[3]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[4]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[5]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[6]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[7]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[8]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[9]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[10]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[11]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[12]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[13]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[14]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[15]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[16]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[17]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[18]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[19]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[20]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[21]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[22]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[23]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[24]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[25]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[26]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[27]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[28]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[29]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[30]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[31]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[32]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[33]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[34]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[35]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[36]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[37]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[38]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[39]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[40]) begin
+            x = x | msb64;
+        end
+        if ((x & msb64) != z64) begin
+            x = (x >> sh_s) | sext;
+        end
+        else begin
+            x = x >> sh_s;
+        end
+        rdata = z32;
+        if (adr == a_lo) begin
+            rdata = x[(32'h0)+:(32)];
+            if (rd) begin
+                hi$d = x[(32'h20)+:(32)];
+            end
+        end
+        if (adr == a_hi) begin
+            rdata = hi$q;
+        end
+        if (reset) begin
+            hi$d = z32;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$pc
+
+
+module encspeed_ecc_wb$regs$pc$hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$pc$hi
 
 
 module encspeed_ecc_wb$regs$prev_illegal(d,q,clock);
@@ -24396,26 +24850,56 @@ module encspeed_ecc_wb$regs$prev_stalled(d,q,clock);
 endmodule // encspeed_ecc_wb$regs$prev_stalled
 
 
-module encspeed_ecc_wb$regs$r_cfg_dt(d,q,clock);
+module encspeed_ecc_wb$regs$r_cfg_dt(clock,reset,adr,wr,lanes,ones,rdata,q);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] lanes;
+    input wire  [31:0] ones;
+    output reg  [31:0] rdata;
+    output reg  [23:0] q;
     
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
+    // Constant declarations
+    localparam  offset = 8'h24;
+    localparam  mask = 32'hffffff;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] word$d;
+    wire  [31:0] word$q;
+    reg  word$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$r_cfg_dt$word word(
+        .d(word$d),
+        .q(word$q),
+        .clock(word$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        word$clock = clock;
+        word$d = word$q;
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = word$q;
+            if (wr) begin
+                word$d = ((word$q & (~lanes)) | ones) & mask;
+            end
+        end
+        if (reset) begin
+            word$d = z32;
+        end
+        q = word$q[(32'h0)+:(24)];
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
 endmodule // encspeed_ecc_wb$regs$r_cfg_dt
 
 
-module encspeed_ecc_wb$regs$r_cfg_filter(d,q,clock);
+module encspeed_ecc_wb$regs$r_cfg_dt$word(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24431,10 +24915,59 @@ module encspeed_ecc_wb$regs$r_cfg_filter(d,q,clock);
        q <= d;
     end
           
+endmodule // encspeed_ecc_wb$regs$r_cfg_dt$word
+
+
+module encspeed_ecc_wb$regs$r_cfg_filter(clock,reset,adr,wr,lanes,ones,rdata,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] lanes;
+    input wire  [31:0] ones;
+    output reg  [31:0] rdata;
+    output reg  [15:0] q;
+    
+    // Constant declarations
+    localparam  offset = 8'h2c;
+    localparam  mask = 32'hffff;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] word$d;
+    wire  [31:0] word$q;
+    reg  word$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$r_cfg_filter$word word(
+        .d(word$d),
+        .q(word$q),
+        .clock(word$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        word$clock = clock;
+        word$d = word$q;
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = word$q;
+            if (wr) begin
+                word$d = ((word$q & (~lanes)) | ones) & mask;
+            end
+        end
+        if (reset) begin
+            word$d = z32;
+        end
+        q = word$q[(32'h0)+:(16)];
+    end
+    
 endmodule // encspeed_ecc_wb$regs$r_cfg_filter
 
 
-module encspeed_ecc_wb$regs$r_cfg_timeout(d,q,clock);
+module encspeed_ecc_wb$regs$r_cfg_filter$word(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -24450,7 +24983,1159 @@ module encspeed_ecc_wb$regs$r_cfg_timeout(d,q,clock);
        q <= d;
     end
           
+endmodule // encspeed_ecc_wb$regs$r_cfg_filter$word
+
+
+module encspeed_ecc_wb$regs$r_cfg_timeout(clock,reset,adr,wr,lanes,ones,rdata,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] lanes;
+    input wire  [31:0] ones;
+    output reg  [31:0] rdata;
+    output reg  [23:0] q;
+    
+    // Constant declarations
+    localparam  offset = 8'h28;
+    localparam  mask = 32'hffffff;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] word$d;
+    wire  [31:0] word$q;
+    reg  word$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$regs$r_cfg_timeout$word word(
+        .d(word$d),
+        .q(word$q),
+        .clock(word$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        word$clock = clock;
+        word$d = word$q;
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = word$q;
+            if (wr) begin
+                word$d = ((word$q & (~lanes)) | ones) & mask;
+            end
+        end
+        if (reset) begin
+            word$d = z32;
+        end
+        q = word$q[(32'h0)+:(24)];
+    end
+    
 endmodule // encspeed_ecc_wb$regs$r_cfg_timeout
+
+
+module encspeed_ecc_wb$regs$r_cfg_timeout$word(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$r_cfg_timeout$word
+
+
+module encspeed_ecc_wb$regs$r_ndt(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [23:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h4c;
+    localparam  w_one = 24'h1;
+    localparam  w_zero = 24'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h800000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h8;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [23:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$r_ndt
+
+
+module encspeed_ecc_wb$regs$r_nep(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [23:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h48;
+    localparam  w_one = 24'h1;
+    localparam  w_zero = 24'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h800000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h8;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [23:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$r_nep
+
+
+module encspeed_ecc_wb$regs$r_position(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h40;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$r_position
+
+
+module encspeed_ecc_wb$regs$r_z_latch(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h44;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$r_z_latch
+
+
+module encspeed_ecc_wb$regs$rev(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [15:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h88;
+    localparam  w_one = 16'h1;
+    localparam  w_zero = 16'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h8000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h10;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [15:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$rev
+
+
+module encspeed_ecc_wb$regs$status(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h30;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$status
+
+
+module encspeed_ecc_wb$regs$timeout_default(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h18;
+    localparam  value = 32'h3e8;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$timeout_default
+
+
+module encspeed_ecc_wb$regs$version(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h4;
+    localparam  value = 32'h10000;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$regs$version
 
 
 module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,ecc_c,ecc_d,ident_arm,speed_mtc,mtc_strobe,speed_n3c,n3c_strobe,ident_done,ident_overflow,ident_count,ident_t_min,ident_t_max,ident_p_min,ident_p_max,ident_sum_t,ident_sum_sin,ident_sum_cos);
@@ -24486,140 +26171,278 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
     input wire  [71:0] ident_sum_cos;
     
     // Constant declarations
-    localparam  adr_mask = 8'hfc;
-    localparam  a_id = 8'h90;
-    localparam  a_version = 8'h94;
     localparam  a_ctrl = 8'h98;
-    localparam  a_status = 8'h9c;
-    localparam  a_c = 8'ha0;
-    localparam  a_d = 8'ha4;
-    localparam  a_irq_enable = 8'ha8;
-    localparam  a_irq_status = 8'hac;
-    localparam  a_mtc_lo = 8'hb0;
-    localparam  a_mtc_hi = 8'hb4;
-    localparam  a_n3c_lo = 8'hb8;
-    localparam  a_n3c_hi = 8'hbc;
-    localparam  a_count = 8'hc0;
-    localparam  a_t_min = 8'hc4;
-    localparam  a_t_max = 8'hc8;
-    localparam  a_p = 8'hcc;
-    localparam  a_t0 = 8'hd0;
-    localparam  a_t1 = 8'hd4;
-    localparam  a_t2 = 8'hd8;
-    localparam  a_s0 = 8'hdc;
-    localparam  a_s1 = 8'he0;
-    localparam  a_s2 = 8'he4;
-    localparam  a_c0 = 8'he8;
-    localparam  a_c1 = 8'hec;
-    localparam  a_c2 = 8'hf0;
-    localparam  k_id = 32'h454e4345;
-    localparam  k_version = 32'h10000;
-    localparam  m_coef = 32'hffffffff;
-    localparam  m_irq_enable = 32'h7;
-    localparam  m_irq_w1c = 32'h7;
-    localparam  f_arm = 32'h1;
     localparam  f_load = 32'h2;
     localparam  s_done = 32'h1;
     localparam  s_overflow = 32'h2;
     localparam  e_mtc = 32'h1;
     localparam  e_n3c = 32'h2;
     localparam  e_ident = 32'h4;
-    localparam  lane0 = 32'hff;
-    localparam  lane1 = 32'hff00;
-    localparam  lane2 = 32'hff0000;
-    localparam  lane3 = 32'hff000000;
     localparam  z32 = 32'h0;
-    localparam  msb32 = 32'h80000000;
-    localparam  sext8 = 32'hffffff00;
-    localparam  z64 = 64'h0;
-    localparam  msb64 = 64'h8000000000000000;
-    localparam  sext = 64'hfffffe0000000000;
-    localparam  sh_one = 8'h1;
-    localparam  sh_count = 8'hf;
-    localparam  sh_byte = 8'h18;
-    localparam  sh_s = 8'h17;
     
     // Stub signals
-    reg  ack$d;
-    wire  ack$q;
-    reg  ack$clock;
-    reg  [31:0] dat$d;
-    wire  [31:0] dat$q;
-    reg  dat$clock;
-    reg  arm$d;
-    wire  arm$q;
+    reg  file$clock;
+    reg  file$reset;
+    reg  file$wb_cyc_i;
+    reg  file$wb_stb_i;
+    reg  file$wb_we_i;
+    reg  [7:0] file$wb_adr_i;
+    reg  [31:0] file$wb_dat_i;
+    reg  [3:0] file$wb_sel_i;
+    wire  [31:0] file$wb_dat_o;
+    wire  file$wb_ack_o;
+    wire  file$irq;
+    reg  [31:0] file$events;
+    reg  [31:0] file$cells;
+    wire  [7:0] file$adr;
+    wire  file$rd;
+    wire  file$wr;
+    wire  [31:0] file$lanes;
+    wire  [31:0] file$ones;
+    reg  [7:0] id$adr;
+    wire  [31:0] id$rdata;
+    reg  [7:0] version$adr;
+    wire  [31:0] version$rdata;
     reg  arm$clock;
-    reg  [31:0] stage_c$d;
-    wire  [31:0] stage_c$q;
+    reg  arm$reset;
+    reg  [7:0] arm$adr;
+    reg  arm$wr;
+    reg  [31:0] arm$ones;
+    wire  arm$pulse;
+    reg  [7:0] status$adr;
+    reg  [31:0] status$value;
+    wire  [31:0] status$rdata;
     reg  stage_c$clock;
-    reg  [31:0] stage_d$d;
-    wire  [31:0] stage_d$q;
+    reg  stage_c$reset;
+    reg  [7:0] stage_c$adr;
+    reg  stage_c$wr;
+    reg  [31:0] stage_c$lanes;
+    reg  [31:0] stage_c$ones;
+    wire  [31:0] stage_c$rdata;
+    wire  [31:0] stage_c$q;
     reg  stage_d$clock;
+    reg  stage_d$reset;
+    reg  [7:0] stage_d$adr;
+    reg  stage_d$wr;
+    reg  [31:0] stage_d$lanes;
+    reg  [31:0] stage_d$ones;
+    wire  [31:0] stage_d$rdata;
+    wire  [31:0] stage_d$q;
+    reg  mtc$clock;
+    reg  mtc$reset;
+    reg  [7:0] mtc$adr;
+    reg  mtc$rd;
+    reg  [40:0] mtc$value;
+    wire  [31:0] mtc$rdata;
+    reg  n3c$clock;
+    reg  n3c$reset;
+    reg  [7:0] n3c$adr;
+    reg  n3c$rd;
+    reg  [40:0] n3c$value;
+    wire  [31:0] n3c$rdata;
+    reg  [7:0] count$adr;
+    reg  [16:0] count$value;
+    wire  [31:0] count$rdata;
+    reg  [7:0] t_min$adr;
+    reg  [31:0] t_min$value;
+    wire  [31:0] t_min$rdata;
+    reg  [7:0] t_max$adr;
+    reg  [31:0] t_max$value;
+    wire  [31:0] t_max$rdata;
+    reg  [7:0] p_min$adr;
+    reg  [15:0] p_min$value;
+    wire  [31:0] p_min$rdata;
+    reg  [7:0] p_max$adr;
+    reg  [15:0] p_max$value;
+    wire  [31:0] p_max$rdata;
+    reg  [7:0] t0$adr;
+    reg  [31:0] t0$value;
+    wire  [31:0] t0$rdata;
+    reg  [7:0] t1$adr;
+    reg  [31:0] t1$value;
+    wire  [31:0] t1$rdata;
+    reg  [7:0] t2$adr;
+    reg  [7:0] t2$value;
+    wire  [31:0] t2$rdata;
+    reg  [7:0] s0$adr;
+    reg  [31:0] s0$value;
+    wire  [31:0] s0$rdata;
+    reg  [7:0] s1$adr;
+    reg  [31:0] s1$value;
+    wire  [31:0] s1$rdata;
+    reg  [7:0] s2$adr;
+    reg  [7:0] s2$value;
+    wire  [31:0] s2$rdata;
+    reg  [7:0] c0$adr;
+    reg  [31:0] c0$value;
+    wire  [31:0] c0$rdata;
+    reg  [7:0] c1$adr;
+    reg  [31:0] c1$value;
+    wire  [31:0] c1$rdata;
+    reg  [7:0] c2$adr;
+    reg  [7:0] c2$value;
+    wire  [31:0] c2$rdata;
     reg  [31:0] r_ecc_c$d;
     wire  [31:0] r_ecc_c$q;
     reg  r_ecc_c$clock;
     reg  [31:0] r_ecc_d$d;
     wire  [31:0] r_ecc_d$q;
     reg  r_ecc_d$clock;
-    reg  [31:0] irq_enable$d;
-    wire  [31:0] irq_enable$q;
-    reg  irq_enable$clock;
-    reg  [31:0] irq_status$d;
-    wire  [31:0] irq_status$q;
-    reg  irq_status$clock;
-    reg  [31:0] hi_mtc$d;
-    wire  [31:0] hi_mtc$q;
-    reg  hi_mtc$clock;
-    reg  [31:0] hi_n3c$d;
-    wire  [31:0] hi_n3c$q;
-    reg  hi_n3c$clock;
     reg  prev_done$d;
     wire  prev_done$q;
     reg  prev_done$clock;
     
     // Local signals
-    reg  [7:0] adr;
-    reg  req;
-    reg  rd;
-    reg  wr;
-    reg  [31:0] lanes;
-    reg  [31:0] ones;
-    reg  [31:0] rdata;
-    reg  [31:0] irq_clear;
+    reg  [31:0] status_word;
     reg  [31:0] events;
-    reg  [63:0] x_mtc;
-    reg  [63:0] x_n3c;
-    reg  [31:0] x_count;
-    reg  [31:0] x_p;
-    reg  [31:0] x_t2;
-    reg  [31:0] x_s2;
-    reg  [31:0] x_c2;
     
     // Sub module instances
-    encspeed_ecc_wb$window$ack ack(
-        .d(ack$d),
-        .q(ack$q),
-        .clock(ack$clock)
+    encspeed_ecc_wb$window$file file(
+        .clock(file$clock),
+        .reset(file$reset),
+        .wb_cyc_i(file$wb_cyc_i),
+        .wb_stb_i(file$wb_stb_i),
+        .wb_we_i(file$wb_we_i),
+        .wb_adr_i(file$wb_adr_i),
+        .wb_dat_i(file$wb_dat_i),
+        .wb_sel_i(file$wb_sel_i),
+        .wb_dat_o(file$wb_dat_o),
+        .wb_ack_o(file$wb_ack_o),
+        .irq(file$irq),
+        .events(file$events),
+        .cells(file$cells),
+        .adr(file$adr),
+        .rd(file$rd),
+        .wr(file$wr),
+        .lanes(file$lanes),
+        .ones(file$ones)
     );
-    encspeed_ecc_wb$window$dat dat(
-        .d(dat$d),
-        .q(dat$q),
-        .clock(dat$clock)
+    encspeed_ecc_wb$window$id id(
+        .adr(id$adr),
+        .rdata(id$rdata)
+    );
+    encspeed_ecc_wb$window$version version(
+        .adr(version$adr),
+        .rdata(version$rdata)
     );
     encspeed_ecc_wb$window$arm arm(
-        .d(arm$d),
-        .q(arm$q),
-        .clock(arm$clock)
+        .clock(arm$clock),
+        .reset(arm$reset),
+        .adr(arm$adr),
+        .wr(arm$wr),
+        .ones(arm$ones),
+        .pulse(arm$pulse)
+    );
+    encspeed_ecc_wb$window$status status(
+        .adr(status$adr),
+        .value(status$value),
+        .rdata(status$rdata)
     );
     encspeed_ecc_wb$window$stage_c stage_c(
-        .d(stage_c$d),
-        .q(stage_c$q),
-        .clock(stage_c$clock)
+        .clock(stage_c$clock),
+        .reset(stage_c$reset),
+        .adr(stage_c$adr),
+        .wr(stage_c$wr),
+        .lanes(stage_c$lanes),
+        .ones(stage_c$ones),
+        .rdata(stage_c$rdata),
+        .q(stage_c$q)
     );
     encspeed_ecc_wb$window$stage_d stage_d(
-        .d(stage_d$d),
-        .q(stage_d$q),
-        .clock(stage_d$clock)
+        .clock(stage_d$clock),
+        .reset(stage_d$reset),
+        .adr(stage_d$adr),
+        .wr(stage_d$wr),
+        .lanes(stage_d$lanes),
+        .ones(stage_d$ones),
+        .rdata(stage_d$rdata),
+        .q(stage_d$q)
+    );
+    encspeed_ecc_wb$window$mtc mtc(
+        .clock(mtc$clock),
+        .reset(mtc$reset),
+        .adr(mtc$adr),
+        .rd(mtc$rd),
+        .value(mtc$value),
+        .rdata(mtc$rdata)
+    );
+    encspeed_ecc_wb$window$n3c n3c(
+        .clock(n3c$clock),
+        .reset(n3c$reset),
+        .adr(n3c$adr),
+        .rd(n3c$rd),
+        .value(n3c$value),
+        .rdata(n3c$rdata)
+    );
+    encspeed_ecc_wb$window$count count(
+        .adr(count$adr),
+        .value(count$value),
+        .rdata(count$rdata)
+    );
+    encspeed_ecc_wb$window$t_min t_min(
+        .adr(t_min$adr),
+        .value(t_min$value),
+        .rdata(t_min$rdata)
+    );
+    encspeed_ecc_wb$window$t_max t_max(
+        .adr(t_max$adr),
+        .value(t_max$value),
+        .rdata(t_max$rdata)
+    );
+    encspeed_ecc_wb$window$p_min p_min(
+        .adr(p_min$adr),
+        .value(p_min$value),
+        .rdata(p_min$rdata)
+    );
+    encspeed_ecc_wb$window$p_max p_max(
+        .adr(p_max$adr),
+        .value(p_max$value),
+        .rdata(p_max$rdata)
+    );
+    encspeed_ecc_wb$window$t0 t0(
+        .adr(t0$adr),
+        .value(t0$value),
+        .rdata(t0$rdata)
+    );
+    encspeed_ecc_wb$window$t1 t1(
+        .adr(t1$adr),
+        .value(t1$value),
+        .rdata(t1$rdata)
+    );
+    encspeed_ecc_wb$window$t2 t2(
+        .adr(t2$adr),
+        .value(t2$value),
+        .rdata(t2$rdata)
+    );
+    encspeed_ecc_wb$window$s0 s0(
+        .adr(s0$adr),
+        .value(s0$value),
+        .rdata(s0$rdata)
+    );
+    encspeed_ecc_wb$window$s1 s1(
+        .adr(s1$adr),
+        .value(s1$value),
+        .rdata(s1$rdata)
+    );
+    encspeed_ecc_wb$window$s2 s2(
+        .adr(s2$adr),
+        .value(s2$value),
+        .rdata(s2$rdata)
+    );
+    encspeed_ecc_wb$window$c0 c0(
+        .adr(c0$adr),
+        .value(c0$value),
+        .rdata(c0$rdata)
+    );
+    encspeed_ecc_wb$window$c1 c1(
+        .adr(c1$adr),
+        .value(c1$value),
+        .rdata(c1$rdata)
+    );
+    encspeed_ecc_wb$window$c2 c2(
+        .adr(c2$adr),
+        .value(c2$value),
+        .rdata(c2$rdata)
     );
     encspeed_ecc_wb$window$r_ecc_c r_ecc_c(
         .d(r_ecc_c$d),
@@ -24631,26 +26454,6 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
         .q(r_ecc_d$q),
         .clock(r_ecc_d$clock)
     );
-    encspeed_ecc_wb$window$irq_enable irq_enable(
-        .d(irq_enable$d),
-        .q(irq_enable$q),
-        .clock(irq_enable$clock)
-    );
-    encspeed_ecc_wb$window$irq_status irq_status(
-        .d(irq_status$d),
-        .q(irq_status$q),
-        .clock(irq_status$clock)
-    );
-    encspeed_ecc_wb$window$hi_mtc hi_mtc(
-        .d(hi_mtc$d),
-        .q(hi_mtc$q),
-        .clock(hi_mtc$clock)
-    );
-    encspeed_ecc_wb$window$hi_n3c hi_n3c(
-        .d(hi_n3c$d),
-        .q(hi_n3c$q),
-        .clock(hi_n3c$clock)
-    );
     encspeed_ecc_wb$window$prev_done prev_done(
         .d(prev_done$d),
         .q(prev_done$q),
@@ -24659,812 +26462,97 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
     
     // Update code
     always @(*) begin
-        ack$clock = clock;
-        dat$clock = clock;
+        r_ecc_c$clock = clock;
+        r_ecc_d$clock = clock;
+        prev_done$clock = clock;
+        r_ecc_c$d = r_ecc_c$q;
+        r_ecc_d$d = r_ecc_d$q;
+        prev_done$d = prev_done$q;
+        file$clock = clock;
         arm$clock = clock;
         stage_c$clock = clock;
         stage_d$clock = clock;
-        r_ecc_c$clock = clock;
-        r_ecc_d$clock = clock;
-        irq_enable$clock = clock;
-        irq_status$clock = clock;
-        hi_mtc$clock = clock;
-        hi_n3c$clock = clock;
-        prev_done$clock = clock;
-        ack$d = ack$q;
-        dat$d = dat$q;
-        arm$d = arm$q;
-        stage_c$d = stage_c$q;
-        stage_d$d = stage_d$q;
-        r_ecc_c$d = r_ecc_c$q;
-        r_ecc_d$d = r_ecc_d$q;
-        irq_enable$d = irq_enable$q;
-        irq_status$d = irq_status$q;
-        hi_mtc$d = hi_mtc$q;
-        hi_n3c$d = hi_n3c$q;
-        prev_done$d = prev_done$q;
-        x_mtc = z64;
-        x_n3c = z64;
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[0]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[0]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[1]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[1]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[2]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[2]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[3]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[3]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[4]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[4]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[5]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[5]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[6]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[6]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[7]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[7]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[8]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[8]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[9]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[9]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[10]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[10]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[11]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[11]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[12]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[12]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[13]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[13]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[14]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[14]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[15]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[15]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[16]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[16]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[17]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[17]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[18]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[18]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[19]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[19]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[20]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[20]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[21]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[21]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[22]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[22]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[23]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[23]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[24]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[24]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[25]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[25]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[26]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[26]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[27]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[27]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[28]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[28]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[29]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[29]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[30]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[30]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[31]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[31]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[32]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[32]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[33]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[33]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[34]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[34]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[35]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[35]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[36]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[36]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[37]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[37]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[38]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[38]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[39]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[39]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        x_mtc = x_mtc >> sh_one;
-        if (speed_mtc[40]) begin
-            x_mtc = x_mtc | msb64;
-        end
-        x_n3c = x_n3c >> sh_one;
-        if (speed_n3c[40]) begin
-            x_n3c = x_n3c | msb64;
-        end
-        if ((x_mtc & msb64) != z64) begin
-            x_mtc = (x_mtc >> sh_s) | sext;
-        end
-        else begin
-            x_mtc = x_mtc >> sh_s;
-        end
-        if ((x_n3c & msb64) != z64) begin
-            x_n3c = (x_n3c >> sh_s) | sext;
-        end
-        else begin
-            x_n3c = x_n3c >> sh_s;
-        end
-        x_count = z32;
-        x_count = x_count >> sh_one;
-        if (ident_count[0]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[1]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[2]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[3]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[4]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[5]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[6]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[7]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[8]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[9]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[10]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[11]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[12]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[13]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[14]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[15]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_one;
-        if (ident_count[16]) begin
-            x_count = x_count | msb32;
-        end
-        x_count = x_count >> sh_count;
-        x_p = z32;
-        x_p = x_p >> sh_one;
-        if (ident_p_min[0]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[1]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[2]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[3]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[4]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[5]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[6]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[7]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[8]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[9]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[10]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[11]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[12]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[13]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[14]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_min[15]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[0]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[1]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[2]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[3]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[4]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[5]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[6]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[7]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[8]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[9]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[10]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[11]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[12]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[13]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[14]) begin
-            x_p = x_p | msb32;
-        end
-        x_p = x_p >> sh_one;
-        if (ident_p_max[15]) begin
-            x_p = x_p | msb32;
-        end
-        x_t2 = z32;
-        x_s2 = z32;
-        x_c2 = z32;
-        x_t2 = x_t2 >> sh_one;
-        if (ident_sum_t[64]) begin
-            x_t2 = x_t2 | msb32;
-        end
-        x_s2 = x_s2 >> sh_one;
-        if (ident_sum_sin[64]) begin
-            x_s2 = x_s2 | msb32;
-        end
-        x_c2 = x_c2 >> sh_one;
-        if (ident_sum_cos[64]) begin
-            x_c2 = x_c2 | msb32;
-        end
-        x_t2 = x_t2 >> sh_one;
-        if (ident_sum_t[65]) begin
-            x_t2 = x_t2 | msb32;
-        end
-        x_s2 = x_s2 >> sh_one;
-        if (ident_sum_sin[65]) begin
-            x_s2 = x_s2 | msb32;
-        end
-        x_c2 = x_c2 >> sh_one;
-        if (ident_sum_cos[65]) begin
-            x_c2 = x_c2 | msb32;
-        end
-        x_t2 = x_t2 >> sh_one;
-        if (ident_sum_t[66]) begin
-            x_t2 = x_t2 | msb32;
-        end
-        x_s2 = x_s2 >> sh_one;
-        if (ident_sum_sin[66]) begin
-            x_s2 = x_s2 | msb32;
-        end
-        x_c2 = x_c2 >> sh_one;
-        if (ident_sum_cos[66]) begin
-            x_c2 = x_c2 | msb32;
-        end
-        x_t2 = x_t2 >> sh_one;
-        if (ident_sum_t[67]) begin
-            x_t2 = x_t2 | msb32;
-        end
-        x_s2 = x_s2 >> sh_one;
-        if (ident_sum_sin[67]) begin
-            x_s2 = x_s2 | msb32;
-        end
-        x_c2 = x_c2 >> sh_one;
-        if (ident_sum_cos[67]) begin
-            x_c2 = x_c2 | msb32;
-        end
-        x_t2 = x_t2 >> sh_one;
-        if (ident_sum_t[68]) begin
-            x_t2 = x_t2 | msb32;
-        end
-        x_s2 = x_s2 >> sh_one;
-        if (ident_sum_sin[68]) begin
-            x_s2 = x_s2 | msb32;
-        end
-        x_c2 = x_c2 >> sh_one;
-        if (ident_sum_cos[68]) begin
-            x_c2 = x_c2 | msb32;
-        end
-        x_t2 = x_t2 >> sh_one;
-        if (ident_sum_t[69]) begin
-            x_t2 = x_t2 | msb32;
-        end
-        x_s2 = x_s2 >> sh_one;
-        if (ident_sum_sin[69]) begin
-            x_s2 = x_s2 | msb32;
-        end
-        x_c2 = x_c2 >> sh_one;
-        if (ident_sum_cos[69]) begin
-            x_c2 = x_c2 | msb32;
-        end
-        x_t2 = x_t2 >> sh_one;
-        if (ident_sum_t[70]) begin
-            x_t2 = x_t2 | msb32;
-        end
-        x_s2 = x_s2 >> sh_one;
-        if (ident_sum_sin[70]) begin
-            x_s2 = x_s2 | msb32;
-        end
-        x_c2 = x_c2 >> sh_one;
-        if (ident_sum_cos[70]) begin
-            x_c2 = x_c2 | msb32;
-        end
-        x_t2 = x_t2 >> sh_one;
-        if (ident_sum_t[71]) begin
-            x_t2 = x_t2 | msb32;
-        end
-        x_s2 = x_s2 >> sh_one;
-        if (ident_sum_sin[71]) begin
-            x_s2 = x_s2 | msb32;
-        end
-        x_c2 = x_c2 >> sh_one;
-        if (ident_sum_cos[71]) begin
-            x_c2 = x_c2 | msb32;
-        end
-        x_t2 = x_t2 >> sh_byte;
-        if (ident_sum_t[32'h47]) begin
-            x_t2 = x_t2 | sext8;
-        end
-        x_s2 = x_s2 >> sh_byte;
-        if (ident_sum_sin[32'h47]) begin
-            x_s2 = x_s2 | sext8;
-        end
-        x_c2 = x_c2 >> sh_byte;
-        if (ident_sum_cos[32'h47]) begin
-            x_c2 = x_c2 | sext8;
-        end
-        adr = wb_adr_i & adr_mask;
-        req = wb_cyc_i & wb_stb_i & (~ack$q);
-        rd = req & (~wb_we_i);
-        wr = req & wb_we_i;
-        lanes = z32;
-        if (wb_sel_i[32'h0]) begin
-            lanes = lanes | lane0;
-        end
-        if (wb_sel_i[32'h1]) begin
-            lanes = lanes | lane1;
-        end
-        if (wb_sel_i[32'h2]) begin
-            lanes = lanes | lane2;
-        end
-        if (wb_sel_i[32'h3]) begin
-            lanes = lanes | lane3;
-        end
-        ones = wb_dat_i & lanes;
-        rdata = z32;
-        if (adr == a_id) begin
-            rdata = k_id;
-        end
-        if (adr == a_version) begin
-            rdata = k_version;
-        end
-        if (adr == a_status) begin
-            if (ident_done) begin
-                rdata = rdata | s_done;
-            end
-            if (ident_overflow) begin
-                rdata = rdata | s_overflow;
-            end
-        end
-        if (adr == a_c) begin
-            rdata = stage_c$q;
-        end
-        if (adr == a_d) begin
-            rdata = stage_d$q;
-        end
-        if (adr == a_irq_enable) begin
-            rdata = irq_enable$q;
-        end
-        if (adr == a_irq_status) begin
-            rdata = irq_status$q;
-        end
-        if (adr == a_mtc_lo) begin
-            rdata = x_mtc[(32'h0)+:(32)];
-        end
-        if (adr == a_mtc_hi) begin
-            rdata = hi_mtc$q;
-        end
-        if (adr == a_n3c_lo) begin
-            rdata = x_n3c[(32'h0)+:(32)];
-        end
-        if (adr == a_n3c_hi) begin
-            rdata = hi_n3c$q;
-        end
-        if (adr == a_count) begin
-            rdata = x_count;
-        end
-        if (adr == a_t_min) begin
-            rdata = ident_t_min;
-        end
-        if (adr == a_t_max) begin
-            rdata = ident_t_max;
-        end
-        if (adr == a_p) begin
-            rdata = x_p;
-        end
-        if (adr == a_t0) begin
-            rdata = ident_sum_t[(32'h0)+:(32)];
-        end
-        if (adr == a_t1) begin
-            rdata = ident_sum_t[(32'h20)+:(32)];
-        end
-        if (adr == a_t2) begin
-            rdata = x_t2;
-        end
-        if (adr == a_s0) begin
-            rdata = ident_sum_sin[(32'h0)+:(32)];
-        end
-        if (adr == a_s1) begin
-            rdata = ident_sum_sin[(32'h20)+:(32)];
-        end
-        if (adr == a_s2) begin
-            rdata = x_s2;
-        end
-        if (adr == a_c0) begin
-            rdata = ident_sum_cos[(32'h0)+:(32)];
-        end
-        if (adr == a_c1) begin
-            rdata = ident_sum_cos[(32'h20)+:(32)];
-        end
-        if (adr == a_c2) begin
-            rdata = x_c2;
-        end
-        ack$d = req;
-        dat$d = z32;
-        if (rd) begin
-            dat$d = rdata;
-            if (adr == a_mtc_lo) begin
-                hi_mtc$d = x_mtc[(32'h20)+:(32)];
-            end
-            if (adr == a_n3c_lo) begin
-                hi_n3c$d = x_n3c[(32'h20)+:(32)];
-            end
-        end
-        irq_clear = z32;
-        arm$d = 1'b0;
-        if (wr) begin
-            if (adr == a_ctrl) begin
-                arm$d = (ones & f_arm) != z32;
-                if ((ones & f_load) != z32) begin
-                    r_ecc_c$d = stage_c$q;
-                    r_ecc_d$d = stage_d$q;
-                end
-            end
-            if (adr == a_c) begin
-                stage_c$d = ((stage_c$q & (~lanes)) | ones) & m_coef;
-            end
-            if (adr == a_d) begin
-                stage_d$d = ((stage_d$q & (~lanes)) | ones) & m_coef;
-            end
-            if (adr == a_irq_enable) begin
-                irq_enable$d = ((irq_enable$q & (~lanes)) | ones) & m_irq_enable;
-            end
-            if (adr == a_irq_status) begin
-                irq_clear = ones & m_irq_w1c;
-            end
-        end
+        mtc$clock = clock;
+        n3c$clock = clock;
+        file$reset = reset;
+        file$wb_cyc_i = wb_cyc_i;
+        file$wb_stb_i = wb_stb_i;
+        file$wb_we_i = wb_we_i;
+        file$wb_adr_i = wb_adr_i;
+        file$wb_dat_i = wb_dat_i;
+        file$wb_sel_i = wb_sel_i;
+        wb_ack_o = file$wb_ack_o;
+        wb_dat_o = file$wb_dat_o;
+        irq = file$irq;
+        id$adr = file$adr;
+        version$adr = file$adr;
+        arm$reset = reset;
+        arm$adr = file$adr;
+        arm$wr = file$wr;
+        arm$ones = file$ones;
+        ident_arm = arm$pulse;
+        if (file$wr & (file$adr == a_ctrl) & ((file$ones & f_load) != z32)) begin
+            r_ecc_c$d = stage_c$q;
+            r_ecc_d$d = stage_d$q;
+        end
+        stage_c$reset = reset;
+        stage_c$adr = file$adr;
+        stage_c$wr = file$wr;
+        stage_c$lanes = file$lanes;
+        stage_c$ones = file$ones;
+        stage_d$reset = reset;
+        stage_d$adr = file$adr;
+        stage_d$wr = file$wr;
+        stage_d$lanes = file$lanes;
+        stage_d$ones = file$ones;
+        ecc_c = r_ecc_c$q;
+        ecc_d = r_ecc_d$q;
+        status_word = z32;
+        if (ident_done) begin
+            status_word = status_word | s_done;
+        end
+        if (ident_overflow) begin
+            status_word = status_word | s_overflow;
+        end
+        status$adr = file$adr;
+        status$value = status_word;
+        mtc$reset = reset;
+        mtc$adr = file$adr;
+        mtc$rd = file$rd;
+        mtc$value = speed_mtc;
+        n3c$reset = reset;
+        n3c$adr = file$adr;
+        n3c$rd = file$rd;
+        n3c$value = speed_n3c;
+        count$adr = file$adr;
+        count$value = ident_count;
+        t_min$adr = file$adr;
+        t_min$value = ident_t_min;
+        t_max$adr = file$adr;
+        t_max$value = ident_t_max;
+        p_min$adr = file$adr;
+        p_min$value = ident_p_min;
+        p_max$adr = file$adr;
+        p_max$value = ident_p_max;
+        t0$adr = file$adr;
+        t0$value = ident_sum_t[(32'h0)+:(32)];
+        t1$adr = file$adr;
+        t1$value = ident_sum_t[(32'h20)+:(32)];
+        t2$adr = file$adr;
+        t2$value = ident_sum_t[(32'h40)+:(8)];
+        s0$adr = file$adr;
+        s0$value = ident_sum_sin[(32'h0)+:(32)];
+        s1$adr = file$adr;
+        s1$value = ident_sum_sin[(32'h20)+:(32)];
+        s2$adr = file$adr;
+        s2$value = ident_sum_sin[(32'h40)+:(8)];
+        c0$adr = file$adr;
+        c0$value = ident_sum_cos[(32'h0)+:(32)];
+        c1$adr = file$adr;
+        c1$value = ident_sum_cos[(32'h20)+:(32)];
+        c2$adr = file$adr;
+        c2$value = ident_sum_cos[(32'h40)+:(8)];
+        file$cells = id$rdata | version$rdata | status$rdata | stage_c$rdata | stage_d$rdata | mtc$rdata | n3c$rdata | count$rdata | t_min$rdata | t_max$rdata | p_min$rdata | p_max$rdata | t0$rdata | t1$rdata | t2$rdata | s0$rdata | s1$rdata | s2$rdata | c0$rdata | c1$rdata | c2$rdata;
         events = z32;
         if (mtc_strobe) begin
             events = events | e_mtc;
@@ -25475,72 +26563,974 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
         if (ident_done & (~prev_done$q)) begin
             events = events | e_ident;
         end
-        irq_status$d = (irq_status$q & (~irq_clear)) | events;
+        file$events = events;
         prev_done$d = ident_done;
         if (reset) begin
-            ack$d = 1'b0;
-            dat$d = z32;
-            arm$d = 1'b0;
-            stage_c$d = z32;
-            stage_d$d = z32;
             r_ecc_c$d = z32;
             r_ecc_d$d = z32;
-            irq_enable$d = z32;
-            irq_status$d = z32;
-            hi_mtc$d = z32;
-            hi_n3c$d = z32;
             prev_done$d = 1'b0;
         end
-        wb_ack_o = ack$q;
-        wb_dat_o = dat$q;
-        irq = (irq_status$q & irq_enable$q) != z32;
-        ecc_c = r_ecc_c$q;
-        ecc_d = r_ecc_d$q;
-        ident_arm = arm$q;
     end
     
 endmodule // encspeed_ecc_wb$window
 
 
-module encspeed_ecc_wb$window$ack(d,q,clock);
+module encspeed_ecc_wb$window$arm(clock,reset,adr,wr,ones,pulse);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
     input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] ones;
+    output reg  pulse;
     
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
+    // Constant declarations
+    localparam  offset = 8'h98;
+    localparam  mask = 32'h1;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  fired$d;
+    wire  fired$q;
+    reg  fired$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$arm$fired fired(
+        .d(fired$d),
+        .q(fired$q),
+        .clock(fired$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        fired$clock = clock;
+        fired$d = fired$q;
+        fired$d = wr & (adr == offset) & ((ones & mask) != z32);
+        if (reset) begin
+            fired$d = 1'b0;
+        end
+        pulse = fired$q;
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_ecc_wb$window$ack
-
-
-module encspeed_ecc_wb$window$arm(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
 endmodule // encspeed_ecc_wb$window$arm
 
 
-module encspeed_ecc_wb$window$dat(d,q,clock);
+module encspeed_ecc_wb$window$arm$fired(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$arm$fired
+
+
+module encspeed_ecc_wb$window$c0(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'he8;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$c0
+
+
+module encspeed_ecc_wb$window$c1(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hec;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$c1
+
+
+module encspeed_ecc_wb$window$c2(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [7:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hf0;
+    localparam  w_one = 8'h1;
+    localparam  w_zero = 8'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'hffffff00;
+    localparam  sign = 32'h80;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h18;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [7:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$c2
+
+
+module encspeed_ecc_wb$window$count(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [16:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hc0;
+    localparam  w_one = 17'b1;
+    localparam  w_zero = 17'b0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h10000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'hf;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [16:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$count
+
+
+module encspeed_ecc_wb$window$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,events,cells,adr,rd,wr,lanes,ones);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  wb_cyc_i;
+    input wire  wb_stb_i;
+    input wire  wb_we_i;
+    input wire  [7:0] wb_adr_i;
+    input wire  [31:0] wb_dat_i;
+    input wire  [3:0] wb_sel_i;
+    output reg  [31:0] wb_dat_o;
+    output reg  wb_ack_o;
+    output reg  irq;
+    input wire  [31:0] events;
+    input wire  [31:0] cells;
+    output reg  [7:0] adr;
+    output reg  rd;
+    output reg  wr;
+    output reg  [31:0] lanes;
+    output reg  [31:0] ones;
+    
+    // Stub signals
+    reg  front$clock;
+    reg  front$reset;
+    reg  front$wb_cyc_i;
+    reg  front$wb_stb_i;
+    reg  front$wb_we_i;
+    reg  [7:0] front$wb_adr_i;
+    reg  [31:0] front$wb_dat_i;
+    reg  [3:0] front$wb_sel_i;
+    wire  front$wb_ack_o;
+    wire  [7:0] front$adr;
+    wire  front$rd;
+    wire  front$wr;
+    wire  [31:0] front$lanes;
+    wire  [31:0] front$ones;
+    reg  irqs$clock;
+    reg  irqs$reset;
+    reg  [7:0] irqs$adr;
+    reg  irqs$wr;
+    reg  [31:0] irqs$lanes;
+    reg  [31:0] irqs$ones;
+    reg  [31:0] irqs$events;
+    wire  [31:0] irqs$rdata;
+    wire  irqs$irq;
+    reg  read$clock;
+    reg  read$reset;
+    reg  read$rd;
+    reg  [31:0] read$cells;
+    wire  [31:0] read$wb_dat_o;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$file$front front(
+        .clock(front$clock),
+        .reset(front$reset),
+        .wb_cyc_i(front$wb_cyc_i),
+        .wb_stb_i(front$wb_stb_i),
+        .wb_we_i(front$wb_we_i),
+        .wb_adr_i(front$wb_adr_i),
+        .wb_dat_i(front$wb_dat_i),
+        .wb_sel_i(front$wb_sel_i),
+        .wb_ack_o(front$wb_ack_o),
+        .adr(front$adr),
+        .rd(front$rd),
+        .wr(front$wr),
+        .lanes(front$lanes),
+        .ones(front$ones)
+    );
+    encspeed_ecc_wb$window$file$irqs irqs(
+        .clock(irqs$clock),
+        .reset(irqs$reset),
+        .adr(irqs$adr),
+        .wr(irqs$wr),
+        .lanes(irqs$lanes),
+        .ones(irqs$ones),
+        .events(irqs$events),
+        .rdata(irqs$rdata),
+        .irq(irqs$irq)
+    );
+    encspeed_ecc_wb$window$file$read read(
+        .clock(read$clock),
+        .reset(read$reset),
+        .rd(read$rd),
+        .cells(read$cells),
+        .wb_dat_o(read$wb_dat_o)
+    );
+    
+    // Update code
+    always @(*) begin
+        front$clock = clock;
+        irqs$clock = clock;
+        read$clock = clock;
+        front$reset = reset;
+        front$wb_cyc_i = wb_cyc_i;
+        front$wb_stb_i = wb_stb_i;
+        front$wb_we_i = wb_we_i;
+        front$wb_adr_i = wb_adr_i;
+        front$wb_dat_i = wb_dat_i;
+        front$wb_sel_i = wb_sel_i;
+        wb_ack_o = front$wb_ack_o;
+        adr = front$adr;
+        rd = front$rd;
+        wr = front$wr;
+        lanes = front$lanes;
+        ones = front$ones;
+        irqs$reset = reset;
+        irqs$adr = front$adr;
+        irqs$wr = front$wr;
+        irqs$lanes = front$lanes;
+        irqs$ones = front$ones;
+        irqs$events = events;
+        irq = irqs$irq;
+        read$reset = reset;
+        read$rd = front$rd;
+        read$cells = cells | irqs$rdata;
+        wb_dat_o = read$wb_dat_o;
+    end
+    
+endmodule // encspeed_ecc_wb$window$file
+
+
+module encspeed_ecc_wb$window$file$front(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_ack_o,adr,rd,wr,lanes,ones);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  wb_cyc_i;
+    input wire  wb_stb_i;
+    input wire  wb_we_i;
+    input wire  [7:0] wb_adr_i;
+    input wire  [31:0] wb_dat_i;
+    input wire  [3:0] wb_sel_i;
+    output reg  wb_ack_o;
+    output reg  [7:0] adr;
+    output reg  rd;
+    output reg  wr;
+    output reg  [31:0] lanes;
+    output reg  [31:0] ones;
+    
+    // Constant declarations
+    localparam  adr_mask = 8'hfc;
+    localparam  lane0 = 32'hff;
+    localparam  lane1 = 32'hff00;
+    localparam  lane2 = 32'hff0000;
+    localparam  lane3 = 32'hff000000;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  ack$d;
+    wire  ack$q;
+    reg  ack$clock;
+    
+    // Local signals
+    reg  req;
+    reg  [31:0] l_lanes;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$file$front$ack ack(
+        .d(ack$d),
+        .q(ack$q),
+        .clock(ack$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ack$clock = clock;
+        ack$d = ack$q;
+        req = wb_cyc_i & wb_stb_i & (~ack$q);
+        ack$d = req;
+        if (reset) begin
+            ack$d = 1'b0;
+        end
+        l_lanes = z32;
+        if (wb_sel_i[32'h0]) begin
+            l_lanes = l_lanes | lane0;
+        end
+        if (wb_sel_i[32'h1]) begin
+            l_lanes = l_lanes | lane1;
+        end
+        if (wb_sel_i[32'h2]) begin
+            l_lanes = l_lanes | lane2;
+        end
+        if (wb_sel_i[32'h3]) begin
+            l_lanes = l_lanes | lane3;
+        end
+        wb_ack_o = ack$q;
+        adr = wb_adr_i & adr_mask;
+        rd = req & (~wb_we_i);
+        wr = req & wb_we_i;
+        lanes = l_lanes;
+        ones = wb_dat_i & l_lanes;
+    end
+    
+endmodule // encspeed_ecc_wb$window$file$front
+
+
+module encspeed_ecc_wb$window$file$front$ack(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$front$ack
+
+
+module encspeed_ecc_wb$window$file$irqs(clock,reset,adr,wr,lanes,ones,events,rdata,irq);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] lanes;
+    input wire  [31:0] ones;
+    input wire  [31:0] events;
+    output reg  [31:0] rdata;
+    output reg  irq;
+    
+    // Constant declarations
+    localparam  a_enable = 8'ha8;
+    localparam  a_status = 8'hac;
+    localparam  m_enable = 32'h7;
+    localparam  m_w1c = 32'h7;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] enable$d;
+    wire  [31:0] enable$q;
+    reg  enable$clock;
+    reg  [31:0] status$d;
+    wire  [31:0] status$q;
+    reg  status$clock;
+    
+    // Local signals
+    reg  [31:0] cleared;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$file$irqs$enable enable(
+        .d(enable$d),
+        .q(enable$q),
+        .clock(enable$clock)
+    );
+    encspeed_ecc_wb$window$file$irqs$status status(
+        .d(status$d),
+        .q(status$q),
+        .clock(status$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        enable$clock = clock;
+        status$clock = clock;
+        enable$d = enable$q;
+        status$d = status$q;
+        rdata = z32;
+        cleared = z32;
+        if (adr == a_enable) begin
+            rdata = enable$q;
+            if (wr) begin
+                enable$d = ((enable$q & (~lanes)) | ones) & m_enable;
+            end
+        end
+        if (adr == a_status) begin
+            rdata = status$q;
+            if (wr) begin
+                cleared = ones & m_w1c;
+            end
+        end
+        status$d = (status$q & (~cleared)) | events;
+        if (reset) begin
+            enable$d = z32;
+            status$d = z32;
+        end
+        irq = (status$q & enable$q) != z32;
+    end
+    
+endmodule // encspeed_ecc_wb$window$file$irqs
+
+
+module encspeed_ecc_wb$window$file$irqs$enable(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -25556,10 +27546,10 @@ module encspeed_ecc_wb$window$dat(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$window$dat
+endmodule // encspeed_ecc_wb$window$file$irqs$enable
 
 
-module encspeed_ecc_wb$window$hi_mtc(d,q,clock);
+module encspeed_ecc_wb$window$file$irqs$status(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -25575,10 +27565,48 @@ module encspeed_ecc_wb$window$hi_mtc(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$window$hi_mtc
+endmodule // encspeed_ecc_wb$window$file$irqs$status
 
 
-module encspeed_ecc_wb$window$hi_n3c(d,q,clock);
+module encspeed_ecc_wb$window$file$read(clock,reset,rd,cells,wb_dat_o);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  rd;
+    input wire  [31:0] cells;
+    output reg  [31:0] wb_dat_o;
+    
+    // Constant declarations
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] dat$d;
+    wire  [31:0] dat$q;
+    reg  dat$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$file$read$dat dat(
+        .d(dat$d),
+        .q(dat$q),
+        .clock(dat$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dat$clock = clock;
+        dat$d = dat$q;
+        dat$d = z32;
+        if (rd & (~reset)) begin
+            dat$d = cells;
+        end
+        wb_dat_o = dat$q;
+    end
+    
+endmodule // encspeed_ecc_wb$window$file$read
+
+
+module encspeed_ecc_wb$window$file$read$dat(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -25594,10 +27622,260 @@ module encspeed_ecc_wb$window$hi_n3c(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$window$hi_n3c
+endmodule // encspeed_ecc_wb$window$file$read$dat
 
 
-module encspeed_ecc_wb$window$irq_enable(d,q,clock);
+module encspeed_ecc_wb$window$id(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h90;
+    localparam  value = 32'h454e4345;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$id
+
+
+module encspeed_ecc_wb$window$mtc(clock,reset,adr,rd,value,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  rd;
+    input wire  [40:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  a_lo = 8'hb0;
+    localparam  a_hi = 8'hb4;
+    localparam  z32 = 32'h0;
+    localparam  z64 = 64'h0;
+    localparam  msb64 = 64'h8000000000000000;
+    localparam  sext = 64'hfffffe0000000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_s = 8'h17;
+    
+    // Stub signals
+    reg  [31:0] hi$d;
+    wire  [31:0] hi$q;
+    reg  hi$clock;
+    
+    // Local signals
+    reg  [63:0] x;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$mtc$hi hi(
+        .d(hi$d),
+        .q(hi$q),
+        .clock(hi$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hi$clock = clock;
+        hi$d = hi$q;
+        x = z64;
+        x = x >> sh_one;
+        if (value[0]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[1]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[2]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[3]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[4]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[5]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[6]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[7]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[8]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[9]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[10]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[11]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[12]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[13]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[14]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[15]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[16]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[17]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[18]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[19]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[20]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[21]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[22]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[23]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[24]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[25]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[26]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[27]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[28]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[29]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[30]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[31]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[32]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[33]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[34]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[35]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[36]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[37]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[38]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[39]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[40]) begin
+            x = x | msb64;
+        end
+        if ((x & msb64) != z64) begin
+            x = (x >> sh_s) | sext;
+        end
+        else begin
+            x = x >> sh_s;
+        end
+        rdata = z32;
+        if (adr == a_lo) begin
+            rdata = x[(32'h0)+:(32)];
+            if (rd) begin
+                hi$d = x[(32'h20)+:(32)];
+            end
+        end
+        if (adr == a_hi) begin
+            rdata = hi$q;
+        end
+        if (reset) begin
+            hi$d = z32;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$mtc
+
+
+module encspeed_ecc_wb$window$mtc$hi(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -25613,10 +27891,238 @@ module encspeed_ecc_wb$window$irq_enable(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$window$irq_enable
+endmodule // encspeed_ecc_wb$window$mtc$hi
 
 
-module encspeed_ecc_wb$window$irq_status(d,q,clock);
+module encspeed_ecc_wb$window$n3c(clock,reset,adr,rd,value,rdata);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  rd;
+    input wire  [40:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  a_lo = 8'hb8;
+    localparam  a_hi = 8'hbc;
+    localparam  z32 = 32'h0;
+    localparam  z64 = 64'h0;
+    localparam  msb64 = 64'h8000000000000000;
+    localparam  sext = 64'hfffffe0000000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_s = 8'h17;
+    
+    // Stub signals
+    reg  [31:0] hi$d;
+    wire  [31:0] hi$q;
+    reg  hi$clock;
+    
+    // Local signals
+    reg  [63:0] x;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$n3c$hi hi(
+        .d(hi$d),
+        .q(hi$q),
+        .clock(hi$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        hi$clock = clock;
+        hi$d = hi$q;
+        x = z64;
+        x = x >> sh_one;
+        if (value[0]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[1]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[2]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[3]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[4]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[5]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[6]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[7]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[8]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[9]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[10]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[11]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[12]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[13]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[14]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[15]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[16]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[17]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[18]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[19]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[20]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[21]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[22]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[23]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[24]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[25]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[26]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[27]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[28]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[29]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[30]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[31]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[32]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[33]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[34]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[35]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[36]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[37]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[38]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[39]) begin
+            x = x | msb64;
+        end
+        x = x >> sh_one;
+        if (value[40]) begin
+            x = x | msb64;
+        end
+        if ((x & msb64) != z64) begin
+            x = (x >> sh_s) | sext;
+        end
+        else begin
+            x = x >> sh_s;
+        end
+        rdata = z32;
+        if (adr == a_lo) begin
+            rdata = x[(32'h0)+:(32)];
+            if (rd) begin
+                hi$d = x[(32'h20)+:(32)];
+            end
+        end
+        if (adr == a_hi) begin
+            rdata = hi$q;
+        end
+        if (reset) begin
+            hi$d = z32;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$n3c
+
+
+module encspeed_ecc_wb$window$n3c$hi(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -25632,7 +28138,247 @@ module encspeed_ecc_wb$window$irq_status(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc_wb$window$irq_status
+endmodule // encspeed_ecc_wb$window$n3c$hi
+
+
+module encspeed_ecc_wb$window$p_max(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [15:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hcc;
+    localparam  w_one = 16'h1;
+    localparam  w_zero = 16'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h8000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h10;
+    localparam  sh_lsb = 8'h10;
+    
+    // Local signals
+    reg  [15:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$p_max
+
+
+module encspeed_ecc_wb$window$p_min(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [15:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hcc;
+    localparam  w_one = 16'h1;
+    localparam  w_zero = 16'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h8000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h10;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [15:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$p_min
 
 
 module encspeed_ecc_wb$window$prev_done(d,q,clock);
@@ -25692,26 +28438,536 @@ module encspeed_ecc_wb$window$r_ecc_d(d,q,clock);
 endmodule // encspeed_ecc_wb$window$r_ecc_d
 
 
-module encspeed_ecc_wb$window$stage_c(d,q,clock);
+module encspeed_ecc_wb$window$s0(adr,value,rdata);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hdc;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$s0
+
+
+module encspeed_ecc_wb$window$s1(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'he0;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$s1
+
+
+module encspeed_ecc_wb$window$s2(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [7:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'he4;
+    localparam  w_one = 8'h1;
+    localparam  w_zero = 8'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'hffffff00;
+    localparam  sign = 32'h80;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h18;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [7:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$s2
+
+
+module encspeed_ecc_wb$window$stage_c(clock,reset,adr,wr,lanes,ones,rdata,q);
+    
+    // Module arguments
     input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] lanes;
+    input wire  [31:0] ones;
+    output reg  [31:0] rdata;
+    output reg  [31:0] q;
     
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
+    // Constant declarations
+    localparam  offset = 8'ha0;
+    localparam  mask = 32'hffffffff;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] word$d;
+    wire  [31:0] word$q;
+    reg  word$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$stage_c$word word(
+        .d(word$d),
+        .q(word$q),
+        .clock(word$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        word$clock = clock;
+        word$d = word$q;
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = word$q;
+            if (wr) begin
+                word$d = ((word$q & (~lanes)) | ones) & mask;
+            end
+        end
+        if (reset) begin
+            word$d = z32;
+        end
+        q = word$q[(32'h0)+:(32)];
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
 endmodule // encspeed_ecc_wb$window$stage_c
 
 
-module encspeed_ecc_wb$window$stage_d(d,q,clock);
+module encspeed_ecc_wb$window$stage_c$word(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -25727,4 +28983,1174 @@ module encspeed_ecc_wb$window$stage_d(d,q,clock);
        q <= d;
     end
           
+endmodule // encspeed_ecc_wb$window$stage_c$word
+
+
+module encspeed_ecc_wb$window$stage_d(clock,reset,adr,wr,lanes,ones,rdata,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] lanes;
+    input wire  [31:0] ones;
+    output reg  [31:0] rdata;
+    output reg  [31:0] q;
+    
+    // Constant declarations
+    localparam  offset = 8'ha4;
+    localparam  mask = 32'hffffffff;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] word$d;
+    wire  [31:0] word$q;
+    reg  word$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$stage_d$word word(
+        .d(word$d),
+        .q(word$q),
+        .clock(word$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        word$clock = clock;
+        word$d = word$q;
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = word$q;
+            if (wr) begin
+                word$d = ((word$q & (~lanes)) | ones) & mask;
+            end
+        end
+        if (reset) begin
+            word$d = z32;
+        end
+        q = word$q[(32'h0)+:(32)];
+    end
+    
 endmodule // encspeed_ecc_wb$window$stage_d
+
+
+module encspeed_ecc_wb$window$stage_d$word(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$stage_d$word
+
+
+module encspeed_ecc_wb$window$status(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h9c;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$status
+
+
+module encspeed_ecc_wb$window$t0(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hd0;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$t0
+
+
+module encspeed_ecc_wb$window$t1(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hd4;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$t1
+
+
+module encspeed_ecc_wb$window$t2(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [7:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hd8;
+    localparam  w_one = 8'h1;
+    localparam  w_zero = 8'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'hffffff00;
+    localparam  sign = 32'h80;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h18;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [7:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$t2
+
+
+module encspeed_ecc_wb$window$t_max(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hc8;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$t_max
+
+
+module encspeed_ecc_wb$window$t_min(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'hc4;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$t_min
+
+
+module encspeed_ecc_wb$window$version(adr,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h94;
+    localparam  value = 32'h10000;
+    localparam  z32 = 32'h0;
+    
+    // Update code
+    always @(*) begin
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = value;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$version

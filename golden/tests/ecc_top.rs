@@ -189,3 +189,77 @@ fn corrected_mt_on_the_rigid_disc() {
         assert!(err_th.abs() <= dth, "{rpm} rpm: theta0 error {err_th} rad");
     }
 }
+
+/// The frame of the position in each decoding mode, as docs/reference-model.md states it
+/// from the plant's waveform: in x1 and x2 line p's edge is A rising at x = p lines; in x4
+/// the B step that comes with Z is absorbed into position 0, and line p's edge is B rising
+/// at x = p + ¼. With the fitted T/T̄ = 1 − a1·cos(2πp/K + θ0) (docs/eccentricity-hardware.md,
+/// "Sign"), a frame that puts line p a quarter line later finds θ0 + 2π/(4K). So the θ0
+/// identified in x4 is π/(2K) above the one in x1 and x2 (which is the disc's own), each
+/// within the identification's budget.
+#[test]
+fn identification_frame_of_x4_is_a_quarter_line_after_x1_and_x2() {
+    use golden::frontend::config::{MODE_X1, MODE_X2, MODE_X4};
+    let p = params();
+    let (e, theta0) = (0.35 / 30.0, 50f64.to_radians());
+    let rps: f64 = 100.0;
+    let profile = Profile::constant(rps, 3.3 / rps).unwrap();
+    let disc = EccentricDisc::new(K, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
+    let edges = disc.edges(&profile);
+    let n = (profile.duration() * CLOCK) as u64;
+    let identify = |mode: u8| {
+        let sampler = ClockSampler::new(disc.initial_levels(&profile), &edges, CLOCK, n).unwrap();
+        let mut top = ArmedModel::new(&p, None);
+        let mut ident = GatherOutputs::default();
+        for (k, s) in sampler.enumerate() {
+            let (_, o) = top.step(EccTopInputs {
+                core: CoreInputs {
+                    reset: k < 3,
+                    enc_a: s.a,
+                    enc_b: s.b,
+                    enc_z: s.z,
+                    cfg_mode: mode,
+                    cfg_z_mode: 1,
+                    ..Default::default()
+                },
+                ident_arm: k == 3,
+                ..Default::default()
+            });
+            ident = o.ident;
+        }
+        assert!(
+            ident.done,
+            "mode {mode}: no identification in 3.3 revolutions"
+        );
+        assert_eq!(
+            check_revolution(&ident, K, CLOCK / rps),
+            Ok(()),
+            "mode {mode}"
+        );
+        let got = identify_from_sums(K, ident.sum_t, ident.sum_sin, ident.sum_cos, Model::Rigid);
+        let (_, dth) = error_budget(ident.sum_t as f64, e);
+        (got.theta0, dth)
+    };
+    let wrap = |a: f64| (a + std::f64::consts::PI).rem_euclid(TAU) - std::f64::consts::PI;
+    let quarter_line = TAU / (4.0 * f64::from(K));
+    for (mode, shift) in [(MODE_X1, 0.0), (MODE_X2, 0.0), (MODE_X4, quarter_line)] {
+        let (got, dth) = identify(mode);
+        let err = wrap(got - theta0 - shift);
+        println!(
+            "mode {mode}: theta0 {:.5} deg, expected {:.5} deg, error {:.2e} deg (budget {:.2e} deg)",
+            got.to_degrees(),
+            (theta0 + shift).to_degrees(),
+            err.to_degrees(),
+            dth.to_degrees()
+        );
+        assert!(
+            err.abs() <= dth,
+            "mode {mode}: theta0 error {err} rad, budget {dth}"
+        );
+        // The budget resolves the shift: a θ0 in the other frame would be outside it.
+        assert!(
+            dth < quarter_line,
+            "budget {dth} rad vs a quarter line {quarter_line}"
+        );
+    }
+}

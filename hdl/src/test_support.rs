@@ -9,3 +9,23 @@ pub(crate) fn verilator_lint(top: &str, verilog: &str) {
         panic!("{e}");
     }
 }
+
+/// `uut`, connected, emitted as module `top` of `name`, passes yosys and the Verilator lint.
+pub(crate) fn synthesises_and_lints<B: rust_hdl::prelude::Block>(name: &str, mut uut: B) {
+    uut.connect_all();
+    let v = crate::verilog::named_verilog(&uut, "top");
+    rust_hdl::prelude::yosys_validate(name, &v).unwrap();
+    verilator_lint("top", &v);
+}
+
+/// The default parameters' core register map and eccentricity window (S = 41).
+pub(crate) fn maps() -> (
+    golden::bus::regmap::RegMap,
+    Vec<golden::bus::regmap::Register>,
+) {
+    let p = golden::params::Params::new(golden::params::Spec::default()).unwrap();
+    (
+        golden::bus::regmap::RegMap::new(&p),
+        golden::bus::ecc_regmap::registers(41),
+    )
+}

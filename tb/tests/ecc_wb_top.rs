@@ -21,8 +21,9 @@
 
 use golden::bus::ecc_regmap::{self as m, sum_of_words, ECC_SPEEDS, IDENT_SUMS};
 use golden::bus::ecc_regs::EccRegsOutputs;
+use golden::bus::reg_file::WbBus;
 use golden::bus::regmap;
-use golden::bus::wb_regs::{WbBus, WbRegsOutputs};
+use golden::bus::wb_regs::WbRegsOutputs;
 use golden::ecc::ident_gatherer::GatherOutputs;
 use golden::ideal::plant::Sample;
 use golden::params::{Params, Spec};

@@ -5,7 +5,7 @@
 //! yosys, where two unprefixed ones collide; every top's instantiation template compiles
 //! against its module in Icarus with every port at its width; two prefixed C headers
 //! compile into one C file; every manifest carries the ports, the latencies and the error
-//! budget.
+//! budget; FuseSoC lints every top through the core file at the repository root.
 
 use golden::params::{Params, Spec};
 use golden::top::ports::Port;
@@ -316,4 +316,40 @@ fn every_manifest_carries_ports_latencies_and_the_error_budget() {
             assert_eq!(names.contains(&"ECC_C"), top == Top::EccWb);
         }
     }
+}
+
+/// The repository root, where `encspeed.core` lies.
+fn repository_root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// FuseSoC finds `encspeed.core` at the repository root and its `lint_<top>` target lints
+/// each shipped top with its shipped waivers, clean (docs/integration.md). The same target
+/// with the waivers taken out of a copy of the core file fails: the target really runs
+/// `verilator --lint-only -Wall` and FuseSoC reports its failure.
+#[test]
+fn fusesoc_lints_every_shipped_top_and_fails_without_the_waivers() {
+    let core = "encspeed:ip:encspeed";
+    // FuseSoC scans the cores root recursively: keep it out of target/, where the copy
+    // below (and FuseSoC's own build trees) would be a second `encspeed:ip:encspeed`.
+    std::fs::write(tools::target_dir().join("FUSESOC_IGNORE"), "").unwrap();
+    let build = tools::work_dir("fusesoc", "build").unwrap();
+    for top in Top::ALL {
+        let target = format!("lint_{}", top.module().trim_start_matches("encspeed_"));
+        tools::fusesoc_run(&repository_root(), &build.join(&target), &target, core)
+            .unwrap_or_else(|e| panic!("{target}: {e}"));
+    }
+    let dir = tools::work_dir("fusesoc", "no-waivers").unwrap();
+    let text = std::fs::read_to_string(repository_root().join("encspeed.core")).unwrap();
+    let stripped = text.replace("filesets: [wb, wb_lint]", "filesets: [wb]");
+    assert_ne!(
+        stripped, text,
+        "lint_wb lists its waivers as `[wb, wb_lint]`"
+    );
+    let wb = std::fs::read_to_string(generated("encspeed_wb.v")).unwrap();
+    tools::stage(&dir, &[("encspeed.core", &stripped)]).unwrap();
+    tools::stage(&dir.join("generated"), &[("encspeed_wb.v", &wb)]).unwrap();
+    let e = tools::fusesoc_run(&dir, &dir.join("build"), "lint_wb", core)
+        .expect_err("lint_wb without its waivers");
+    assert!(e.contains("%Warning-UNUSEDSIGNAL"), "{e}");
 }

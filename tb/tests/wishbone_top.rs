@@ -15,8 +15,9 @@
 //!   speed decoding agree with `golden::bus::regmap` and with (b);
 //! - the emitted `encspeed_wb.v` lints and synthesises; `docs/registers.md` is up to date.
 
+use golden::bus::reg_file::WbBus;
 use golden::bus::regmap::{self, LAYOUT, SPAN_BYTES, SPEEDS};
-use golden::bus::wb_regs::{WbBus, WbRegsOutputs};
+use golden::bus::wb_regs::WbRegsOutputs;
 use golden::params::{Params, Spec};
 use golden::top::core::CoreOutputs;
 use golden::top::wb_top::{WbTopInputs, WbTopModel, WbTopOutputs};

@@ -20,8 +20,7 @@
 //!   `n3c_strobe`, `ident_done` rising (previous level registered, 0 after reset).
 
 use crate::bus::ecc_regmap::{self, ECC_SPEEDS, IDENT_SUMS};
-use crate::bus::regmap::{Access, Register};
-use crate::bus::wb_regs::{sign_extend, Request, WbBus};
+use crate::bus::reg_file::{sign_extend, Cycle, RegFileModel, WbBus};
 use crate::ecc::ident_gatherer::GatherOutputs;
 
 /// What `encspeed_ecc` gives the window, named as its ports: the speeds as S-bit two's
@@ -86,101 +85,52 @@ impl EccRegsOutputs {
     }
 }
 
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-struct State {
-    ack: bool,
-    dat: u32,
-    arm: bool,
-    stage_c: u32,
-    stage_d: u32,
+/// The window's slave, one step per clock edge: a [`RegFileModel`] with the window's live
+/// words, events, the loaded coefficients and `ident_arm`.
+#[derive(Clone, Debug)]
+pub struct EccRegsModel {
+    file: RegFileModel,
+    speed_bits: u32,
     ecc_c: u32,
     ecc_d: u32,
-    irq_enable: u32,
-    irq_status: u32,
-    hi: [u32; 2],
     prev_done: bool,
 }
 
-/// The window's slave, one step per clock edge.
-#[derive(Clone, Debug)]
-pub struct EccRegsModel {
-    registers: Vec<Register>,
-    speed_bits: u32,
-    s: State,
-}
+/// The file's one pulse: `ident_arm`.
+const IDENT_ARM: usize = 0;
 
 impl EccRegsModel {
     /// The slave for speeds of `speed_bits` bits (11..=64), in its reset state.
     pub fn new(speed_bits: u32) -> Self {
+        use ecc_regmap as m;
         assert!((11..=64).contains(&speed_bits), "speed_bits {speed_bits}");
+        let regs = ecc_regmap::registers(speed_bits);
+        let shadows: Vec<(u32, u32)> = ECC_SPEEDS.iter().map(|&(lo, hi, _)| (lo, hi)).collect();
+        let ctrl = regs.iter().find(|r| r.offset == m::ECC_CTRL).unwrap();
+        let arm = (m::ECC_CTRL, ctrl.field("IDENT_ARM").mask());
         Self {
-            registers: ecc_regmap::registers(speed_bits),
+            file: RegFileModel::new(regs, "ECC_IRQ_ENABLE", "ECC_IRQ_STATUS", &shadows, &[arm]),
             speed_bits,
-            s: State::default(),
+            ecc_c: 0,
+            ecc_d: 0,
+            prev_done: false,
         }
     }
 
-    fn reg(&self, off: u32) -> &Register {
-        self.registers.iter().find(|r| r.offset == off).unwrap()
-    }
-
-    fn mask(&self, off: u32, a: Access) -> u32 {
-        self.reg(off).mask_of(a)
-    }
-
     fn field(&self, off: u32, name: &str) -> u32 {
-        self.reg(off).field(name).mask()
+        self.file.at(off).field(name).mask()
     }
 
     /// The outputs as they stand.
     pub fn outputs(&self) -> EccRegsOutputs {
-        let s = &self.s;
+        let f = &self.file;
         EccRegsOutputs {
-            wb_ack_o: s.ack,
-            wb_dat_o: s.dat,
-            irq: s.irq_status & s.irq_enable != 0,
-            ecc_c: s.ecc_c,
-            ecc_d: s.ecc_d,
-            ident_arm: s.arm,
-        }
-    }
-
-    /// The value a read of word offset `off` returns with `st`.
-    fn read(&self, off: u32, st: &EccStatus) -> u32 {
-        use ecc_regmap as m;
-        let s = &self.s;
-        let g = &st.ident;
-        if let Some(k) = ECC_SPEEDS.iter().position(|e| e.0 == off) {
-            return sign_extend(st.speeds()[k], self.speed_bits) as u32;
-        }
-        if let Some(k) = ECC_SPEEDS.iter().position(|e| e.1 == off) {
-            return s.hi[k];
-        }
-        let sums = [g.sum_t, g.sum_sin, g.sum_cos];
-        for (j, (w0, _)) in IDENT_SUMS.iter().enumerate() {
-            if (*w0..w0 + 12).contains(&off) {
-                return m::sum_word(sums[j], ((off - w0) / 4) as usize);
-            }
-        }
-        let bit = |b: bool, name: &str| {
-            if b {
-                self.field(m::ECC_STATUS, name)
-            } else {
-                0
-            }
-        };
-        match off {
-            m::ECC_ID | m::ECC_VERSION => self.reg(off).reset.unwrap(),
-            m::ECC_STATUS => bit(g.done, "IDENT_DONE") | bit(g.overflow, "IDENT_OVERFLOW"),
-            m::ECC_C => s.stage_c,
-            m::ECC_D => s.stage_d,
-            m::ECC_IRQ_ENABLE => s.irq_enable,
-            m::ECC_IRQ_STATUS => s.irq_status,
-            m::IDENT_COUNT => g.count as u32,
-            m::IDENT_T_MIN => g.t_min as u32,
-            m::IDENT_T_MAX => g.t_max as u32,
-            m::IDENT_P => (g.p_min as u32) | ((g.p_max as u32) << 16),
-            _ => 0,
+            wb_ack_o: f.ack(),
+            wb_dat_o: f.dat(),
+            irq: f.irq(),
+            ecc_c: self.ecc_c,
+            ecc_d: self.ecc_d,
+            ident_arm: f.pulse(IDENT_ARM),
         }
     }
 
@@ -210,45 +160,8 @@ impl EccRegsModel {
     pub fn step(&mut self, inp: &EccRegsInputs) -> EccRegsOutputs {
         use ecc_regmap as m;
         let st = &inp.status;
-        let b = &inp.bus;
         self.check(st);
-        let Request {
-            off,
-            rd,
-            wr,
-            lanes,
-            ones,
-        } = Request::decode(b, self.s.ack);
-        if inp.reset {
-            self.s = State::default();
-            return self.outputs();
-        }
-        let s = self.s;
-        let mut n = s;
-        n.ack = rd || wr;
-        n.dat = if rd { self.read(off, st) } else { 0 };
-        if rd {
-            if let Some(k) = ECC_SPEEDS.iter().position(|e| e.0 == off) {
-                n.hi[k] = (sign_extend(st.speeds()[k], self.speed_bits) >> 32) as u32;
-            }
-        }
-        let rw = |off: u32, old: u32| ((old & !lanes) | ones) & self.mask(off, Access::Rw);
-        let pulse = |name: &str| wr && off == m::ECC_CTRL && ones & self.field(off, name) != 0;
-        n.arm = pulse("IDENT_ARM");
-        if pulse("LOAD") {
-            n.ecc_c = s.stage_c;
-            n.ecc_d = s.stage_d;
-        }
-        let mut irq_cleared = 0;
-        if wr {
-            match off {
-                m::ECC_C => n.stage_c = rw(off, s.stage_c),
-                m::ECC_D => n.stage_d = rw(off, s.stage_d),
-                m::ECC_IRQ_ENABLE => n.irq_enable = rw(off, s.irq_enable),
-                m::ECC_IRQ_STATUS => irq_cleared = ones & self.mask(off, Access::W1c),
-                _ => {}
-            }
-        }
+        let wide = st.speeds().map(|v| sign_extend(v, self.speed_bits));
         let ev = |b: bool, name: &str| {
             if b {
                 self.field(m::ECC_IRQ_STATUS, name)
@@ -258,11 +171,52 @@ impl EccRegsModel {
         };
         let events = ev(st.mtc_strobe, "MTC")
             | ev(st.n3c_strobe, "N3C")
-            | ev(st.ident.done && !s.prev_done, "IDENT");
-        n.irq_status = (s.irq_status & !irq_cleared) | events;
-        n.prev_done = st.ident.done;
-        self.s = n;
+            | ev(st.ident.done && !self.prev_done, "IDENT");
+        let load = self.field(m::ECC_CTRL, "LOAD");
+        // The staged coefficients as they stand before the edge.
+        let staged = (self.file.rw(m::ECC_C), self.file.rw(m::ECC_D));
+        let cycle = Cycle {
+            reset: inp.reset,
+            bus: &inp.bus,
+            wide: &wide,
+            events,
+        };
+        let flags = (
+            self.field(m::ECC_STATUS, "IDENT_DONE"),
+            self.field(m::ECC_STATUS, "IDENT_OVERFLOW"),
+        );
+        let req = self.file.step(&cycle, &|off| live(off, st, flags));
+        if inp.reset {
+            (self.ecc_c, self.ecc_d, self.prev_done) = (0, 0, false);
+        } else {
+            if req.writes_one(m::ECC_CTRL, load) {
+                (self.ecc_c, self.ecc_d) = staged;
+            }
+            self.prev_done = st.ident.done;
+        }
         self.outputs()
+    }
+}
+
+/// The live word at offset `off` with `st`; `flags` are the masks of `ECC_STATUS`'s
+/// `IDENT_DONE` and `IDENT_OVERFLOW`.
+fn live(off: u32, st: &EccStatus, flags: (u32, u32)) -> u32 {
+    use ecc_regmap as m;
+    let g = &st.ident;
+    let sums = [g.sum_t, g.sum_sin, g.sum_cos];
+    for (j, (w0, _)) in IDENT_SUMS.iter().enumerate() {
+        if (*w0..w0 + 12).contains(&off) {
+            return m::sum_word(sums[j], ((off - w0) / 4) as usize);
+        }
+    }
+    let bit = |b: bool, mask: u32| if b { mask } else { 0 };
+    match off {
+        m::ECC_STATUS => bit(g.done, flags.0) | bit(g.overflow, flags.1),
+        m::IDENT_COUNT => g.count as u32,
+        m::IDENT_T_MIN => g.t_min as u32,
+        m::IDENT_T_MAX => g.t_max as u32,
+        m::IDENT_P => (g.p_min as u32) | ((g.p_max as u32) << 16),
+        _ => 0,
     }
 }
 

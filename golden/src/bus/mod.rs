@@ -3,5 +3,6 @@
 
 pub mod ecc_regmap;
 pub mod ecc_regs;
+pub mod reg_file;
 pub mod regmap;
 pub mod wb_regs;

@@ -20,27 +20,9 @@
 //!   strobes `speed_strobe`, `baseline_strobe`, `index`, `update` and the rising edges of
 //!   (any) fault flag and of `stalled` (previous levels registered, 0 after reset).
 
-use crate::bus::regmap::{
-    self, Access, MapParams, RegMap, CTRL_MODE_LSB, CTRL_Z_MODE_LSB, SPAN_BYTES, SPEEDS,
-};
+use crate::bus::reg_file::{sign_extend, Cycle, RegFileModel, WbBus};
+use crate::bus::regmap::{self, Access, MapParams, RegMap, CTRL_MODE_LSB, CTRL_Z_MODE_LSB, SPEEDS};
 use crate::params::Params;
-
-/// The Wishbone inputs of the register file, named as its ports.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct WbBus {
-    /// Bus cycle in progress.
-    pub wb_cyc_i: bool,
-    /// This slave is addressed.
-    pub wb_stb_i: bool,
-    /// 1 write, 0 read.
-    pub wb_we_i: bool,
-    /// Byte address ([`regmap::ADDR_BITS`] bits; bits 1:0 ignored).
-    pub wb_adr_i: u32,
-    /// Write data.
-    pub wb_dat_i: u32,
-    /// Byte lanes written (4 bits).
-    pub wb_sel_i: u8,
-}
 
 /// The core's outputs that the register file reads, named as its ports. Values are the
 /// ports' bit patterns: unsigned, and the speeds as S-bit two's complement (`raw`, as
@@ -122,80 +104,19 @@ pub struct WbRegsOutputs {
     pub clear_faults: bool,
 }
 
-/// Registers of the file.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-struct State {
-    ack: bool,
-    dat: u32,
-    ctrl: u32,
-    cfg_dt: u32,
-    cfg_timeout: u32,
-    cfg_filter: u32,
-    irq_enable: u32,
-    irq_status: u32,
-    hi: [u32; 6],
-    clear: bool,
+/// The register file, one step per clock edge: a [`RegFileModel`] with the core's live
+/// words, events and configuration outputs.
+#[derive(Clone, Debug)]
+pub struct WbRegsModel {
+    map: RegMap,
+    file: RegFileModel,
     /// fault_illegal, fault_overspeed, fault_revolution before the last edge.
     prev_faults: [bool; 3],
     prev_stalled: bool,
 }
 
-/// The register file, one step per clock edge.
-#[derive(Clone, Debug)]
-pub struct WbRegsModel {
-    map: RegMap,
-    s: State,
-}
-
-/// The 32-bit mask of the byte lanes in `sel`.
-pub fn lane_mask(sel: u8) -> u32 {
-    (0..4)
-        .filter(|j| sel & (1 << j) != 0)
-        .fold(0, |m, j| m | (0xFF << (8 * j)))
-}
-
-/// A bus access as a classic slave decodes it at an edge: a request is
-/// `wb_cyc_i & wb_stb_i` while its `wb_ack_o` is low.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Request {
-    /// Word offset (`wb_adr_i` with bits 1:0 cleared).
-    pub off: u32,
-    /// A read request.
-    pub rd: bool,
-    /// A write request.
-    pub wr: bool,
-    /// The written byte lanes as a 32-bit mask.
-    pub lanes: u32,
-    /// `wb_dat_i` in those lanes: the bits written 1.
-    pub ones: u32,
-}
-
-impl Request {
-    /// The access of `b` for a slave whose `wb_ack_o` is `ack`. Panics if the address does
-    /// not fit `wb_adr_i` or `wb_sel_i` is wider than 4 bits.
-    pub fn decode(b: &WbBus, ack: bool) -> Request {
-        assert!(b.wb_adr_i < SPAN_BYTES, "wb_adr_i = {:#x}", b.wb_adr_i);
-        assert!(b.wb_sel_i < 16, "wb_sel_i = {:#x}", b.wb_sel_i);
-        let req = b.wb_cyc_i && b.wb_stb_i && !ack;
-        let lanes = lane_mask(b.wb_sel_i);
-        Request {
-            off: b.wb_adr_i & !3,
-            rd: req && !b.wb_we_i,
-            wr: req && b.wb_we_i,
-            lanes,
-            ones: b.wb_dat_i & lanes,
-        }
-    }
-}
-
-/// `raw` (S bits, two's complement) sign-extended to 64 bits.
-pub fn sign_extend(raw: u64, s: u32) -> u64 {
-    if raw & (1 << (s - 1)) != 0 {
-        raw | !((1u64 << s) - 1)
-    } else {
-        raw
-    }
-}
+/// The file's one pulse: `clear_faults`.
+const CLEAR_FAULTS: usize = 0;
 
 impl WbRegsModel {
     /// The register file of `p`, in its reset state.
@@ -205,9 +126,20 @@ impl WbRegsModel {
 
     /// The register file of `map` (e.g. [`RegMap::from_map_params`]), in its reset state.
     pub fn from_map(map: RegMap) -> WbRegsModel {
+        let shadows: Vec<(u32, u32)> = SPEEDS.iter().map(|&(lo, hi, _)| (lo, hi)).collect();
+        let clear = (regmap::STATUS, map.reg("STATUS").mask_of(Access::W1c));
+        let file = RegFileModel::new(
+            map.registers().to_vec(),
+            "IRQ_ENABLE",
+            "IRQ_STATUS",
+            &shadows,
+            &[clear],
+        );
         WbRegsModel {
             map,
-            s: State::default(),
+            file,
+            prev_faults: [false; 3],
+            prev_stalled: false,
         }
     }
 
@@ -222,17 +154,18 @@ impl WbRegsModel {
 
     /// The outputs as they stand.
     pub fn outputs(&self) -> WbRegsOutputs {
-        let s = &self.s;
+        let f = &self.file;
+        let ctrl = f.rw(regmap::CTRL);
         WbRegsOutputs {
-            wb_ack_o: s.ack,
-            wb_dat_o: s.dat,
-            irq: s.irq_status & s.irq_enable != 0,
-            cfg_dt: u64::from(s.cfg_dt),
-            cfg_timeout: u64::from(s.cfg_timeout),
-            cfg_filter: u64::from(s.cfg_filter),
-            cfg_mode: ((s.ctrl >> CTRL_MODE_LSB) & 3) as u8,
-            cfg_z_mode: ((s.ctrl >> CTRL_Z_MODE_LSB) & 3) as u8,
-            clear_faults: s.clear,
+            wb_ack_o: f.ack(),
+            wb_dat_o: f.dat(),
+            irq: f.irq(),
+            cfg_dt: u64::from(f.rw(regmap::CFG_DT)),
+            cfg_timeout: u64::from(f.rw(regmap::CFG_TIMEOUT)),
+            cfg_filter: u64::from(f.rw(regmap::CFG_FILTER)),
+            cfg_mode: ((ctrl >> CTRL_MODE_LSB) & 3) as u8,
+            cfg_z_mode: ((ctrl >> CTRL_Z_MODE_LSB) & 3) as u8,
+            clear_faults: f.pulse(CLEAR_FAULTS),
         }
     }
 
@@ -253,100 +186,14 @@ impl WbRegsModel {
         fits(st.rev_error_count, mp.error_count_bits, "rev_error_count");
     }
 
-    /// The value a read of byte offset `off` (word aligned) returns with status `st`.
-    fn read(&self, off: u32, st: &CoreStatus) -> u32 {
-        let s = &self.s;
-        let m = &self.map;
-        let bit = |b: bool, field: &str| if b { m.mask("STATUS", field) } else { 0 };
-        if let Some(k) = SPEEDS.iter().position(|e| e.0 == off) {
-            return sign_extend(st.speeds()[k], self.mp().speed_bits()) as u32;
-        }
-        if let Some(k) = SPEEDS.iter().position(|e| e.1 == off) {
-            return s.hi[k];
-        }
-        match off {
-            regmap::ID
-            | regmap::VERSION
-            | regmap::PARAM0
-            | regmap::PARAM1
-            | regmap::LINES
-            | regmap::DT_DEFAULT
-            | regmap::TIMEOUT_DEFAULT
-            | regmap::CLOCK_HZ => m.at(off).unwrap().reset.unwrap(),
-            regmap::CTRL => s.ctrl,
-            regmap::CFG_DT => s.cfg_dt,
-            regmap::CFG_TIMEOUT => s.cfg_timeout,
-            regmap::CFG_FILTER => s.cfg_filter,
-            regmap::STATUS => {
-                bit(st.valid, "VALID")
-                    | bit(st.stalled, "STALLED")
-                    | bit(st.direction, "DIRECTION")
-                    | bit(st.cfg_error, "CFG_ERROR")
-                    | bit(st.fault_illegal, "FAULT_ILLEGAL")
-                    | bit(st.fault_overspeed, "FAULT_OVERSPEED")
-                    | bit(st.fault_revolution, "FAULT_REVOLUTION")
-            }
-            regmap::IRQ_ENABLE => s.irq_enable,
-            regmap::IRQ_STATUS => s.irq_status,
-            regmap::POSITION => st.position as u32,
-            regmap::Z_LATCH => st.z_latch as u32,
-            regmap::NEP => st.nep as u32,
-            regmap::NDT => st.ndt as u32,
-            regmap::GLITCH_COUNT => st.glitch_count as u32,
-            regmap::ILLEGAL_COUNT => st.illegal_count as u32,
-            regmap::REV_ERROR_COUNT => st.rev_error_count as u32,
-            _ => 0,
-        }
-    }
-
     /// One rising clock edge with `inp` applied; the outputs after it. Panics if a status
     /// value does not fit its port or the address does not fit `wb_adr_i`.
     pub fn step(&mut self, inp: &WbRegsInputs) -> WbRegsOutputs {
         let st = &inp.status;
-        let b = &inp.bus;
         self.check(st);
-        let Request {
-            off,
-            rd,
-            wr,
-            lanes,
-            ones,
-        } = Request::decode(b, self.s.ack);
-        if inp.reset {
-            self.s = State::default();
-            return self.outputs();
-        }
-        let s = self.s;
-        let mut n = s;
-        n.ack = rd || wr;
-        n.dat = if rd { self.read(off, st) } else { 0 };
-        if rd {
-            if let Some(k) = SPEEDS.iter().position(|e| e.0 == off) {
-                n.hi[k] = (sign_extend(st.speeds()[k], self.mp().speed_bits()) >> 32) as u32;
-            }
-        }
-        let rw = |name: &str, old: u32| {
-            let mask = self.map.reg(name).mask_of(Access::Rw);
-            ((old & !lanes) | ones) & mask
-        };
-        let mut irq_cleared = 0;
-        n.clear = false;
-        if wr {
-            match off {
-                regmap::CTRL => n.ctrl = rw("CTRL", s.ctrl),
-                regmap::CFG_DT => n.cfg_dt = rw("CFG_DT", s.cfg_dt),
-                regmap::CFG_TIMEOUT => n.cfg_timeout = rw("CFG_TIMEOUT", s.cfg_timeout),
-                regmap::CFG_FILTER => n.cfg_filter = rw("CFG_FILTER", s.cfg_filter),
-                regmap::IRQ_ENABLE => n.irq_enable = rw("IRQ_ENABLE", s.irq_enable),
-                regmap::IRQ_STATUS => {
-                    irq_cleared = ones & self.map.reg("IRQ_STATUS").mask_of(Access::W1c)
-                }
-                regmap::STATUS => n.clear = ones & self.map.reg("STATUS").mask_of(Access::W1c) != 0,
-                _ => {}
-            }
-        }
+        let wide = st.speeds().map(|v| sign_extend(v, self.mp().speed_bits()));
         let faults = [st.fault_illegal, st.fault_overspeed, st.fault_revolution];
-        let fault_rose = faults.iter().zip(s.prev_faults).any(|(&f, p)| f && !p);
+        let fault_rose = faults.iter().zip(self.prev_faults).any(|(&f, p)| f && !p);
         let ev = |b: bool, field: &str| {
             if b {
                 self.map.mask("IRQ_STATUS", field)
@@ -359,18 +206,52 @@ impl WbRegsModel {
             | ev(st.index, "INDEX")
             | ev(fault_rose, "FAULT")
             | ev(st.update, "UPDATE")
-            | ev(st.stalled && !s.prev_stalled, "STALL");
-        n.irq_status = (s.irq_status & !irq_cleared) | events;
-        n.prev_faults = faults;
-        n.prev_stalled = st.stalled;
-        self.s = n;
+            | ev(st.stalled && !self.prev_stalled, "STALL");
+        let cycle = Cycle {
+            reset: inp.reset,
+            bus: &inp.bus,
+            wide: &wide,
+            events,
+        };
+        let map = &self.map;
+        self.file.step(&cycle, &|off| live(map, off, st));
+        (self.prev_faults, self.prev_stalled) = if inp.reset {
+            ([false; 3], false)
+        } else {
+            (faults, st.stalled)
+        };
         self.outputs()
+    }
+}
+
+/// The live word at byte offset `off` (word aligned) of `m` with status `st`.
+fn live(m: &RegMap, off: u32, st: &CoreStatus) -> u32 {
+    let bit = |b: bool, field: &str| if b { m.mask("STATUS", field) } else { 0 };
+    match off {
+        regmap::STATUS => {
+            bit(st.valid, "VALID")
+                | bit(st.stalled, "STALLED")
+                | bit(st.direction, "DIRECTION")
+                | bit(st.cfg_error, "CFG_ERROR")
+                | bit(st.fault_illegal, "FAULT_ILLEGAL")
+                | bit(st.fault_overspeed, "FAULT_OVERSPEED")
+                | bit(st.fault_revolution, "FAULT_REVOLUTION")
+        }
+        regmap::POSITION => st.position as u32,
+        regmap::Z_LATCH => st.z_latch as u32,
+        regmap::NEP => st.nep as u32,
+        regmap::NDT => st.ndt as u32,
+        regmap::GLITCH_COUNT => st.glitch_count as u32,
+        regmap::ILLEGAL_COUNT => st.illegal_count as u32,
+        regmap::REV_ERROR_COUNT => st.rev_error_count as u32,
+        _ => 0,
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bus::reg_file::lane_mask;
     use crate::bus::regmap::*;
     use crate::params::Spec;
 

@@ -22,7 +22,8 @@
 
 use crate::bus::ecc_regmap::in_window;
 use crate::bus::ecc_regs::{EccRegsInputs, EccRegsModel, EccRegsOutputs, EccStatus};
-use crate::bus::wb_regs::{WbBus, WbRegsInputs, WbRegsModel, WbRegsOutputs};
+use crate::bus::reg_file::WbBus;
+use crate::bus::wb_regs::{WbRegsInputs, WbRegsModel, WbRegsOutputs};
 use crate::params::Params;
 use crate::top::ecc_top::{EccTopInputs, EccTopModel, EccTopOutputs};
 use crate::top::wb_top::{core_inputs, core_status, WbTopInputs, WbTopOutputs};

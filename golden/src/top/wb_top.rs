@@ -26,8 +26,9 @@
 //! the whole core at the edge that sees the new mode (the core's own rule,
 //! [`crate::top::core`]); the register file keeps its state.
 
+use crate::bus::reg_file::WbBus;
 use crate::bus::regmap::{ADDR_BITS, DATA_BITS};
-use crate::bus::wb_regs::{CoreStatus, WbBus, WbRegsInputs, WbRegsModel, WbRegsOutputs};
+use crate::bus::wb_regs::{CoreStatus, WbRegsInputs, WbRegsModel, WbRegsOutputs};
 use crate::params::Params;
 use crate::top::core::{CoreInputs, CoreModel, CoreOutputs};
 use crate::top::port_fields::{port_struct, visit_fields, PortFields, PortValue};

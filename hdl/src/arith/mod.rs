@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! Shared sequential arithmetic.
 
+pub mod div_step;
 pub mod seq_divider;

@@ -86,8 +86,8 @@ pub struct SeqDivider<const W: usize> {
     quotient_reg: DFF<Bits<W>>,
     remainder_reg: DFF<Bits<W>>,
     dbz_reg: DFF<Bit>,
-    /// Low W bits of 2R + b.
-    shifted: Signal<Local, Bits<W>>,
+    /// One restoring division step.
+    div: crate::arith::div_step::DivStep<W>,
     /// 2R + b ≥ den: the quotient bit.
     fits: Signal<Local, Bit>,
     next_rem: Signal<Local, Bits<W>>,
@@ -130,7 +130,7 @@ impl<const W: usize> Default for SeqDivider<W> {
             quotient_reg: Default::default(),
             remainder_reg: Default::default(),
             dbz_reg: Default::default(),
-            shifted: Default::default(),
+            div: Default::default(),
             fits: Default::default(),
             next_rem: Default::default(),
             next_quo: Default::default(),
@@ -160,17 +160,15 @@ impl<const W: usize> Logic for SeqDivider<W> {
             remainder_reg,
             dbz_reg
         );
-        // One restoring step: bring down the next numerator bit, subtract if it fits.
-        self.shifted.next = self.part_rem.q.val() << self.one.val();
-        if (self.shift_quo.q.val() & self.msb.val()) != self.zero.val() {
-            self.shifted.next = (self.part_rem.q.val() << self.one.val()) | self.one.val();
-        }
-        self.fits.next = ((self.part_rem.q.val() & self.msb.val()) != self.zero.val())
-            | (self.shifted.val() >= self.den.q.val());
-        self.next_rem.next = self.shifted.val();
+        // One restoring step (DivStep): bring down the next numerator bit, subtract if it
+        // fits.
+        self.div.rem.next = self.part_rem.q.val();
+        self.div.bit_in.next = (self.shift_quo.q.val() & self.msb.val()) != self.zero.val();
+        self.div.den.next = self.den.q.val();
+        self.fits.next = self.div.fits.val();
+        self.next_rem.next = self.div.next_rem.val();
         self.next_quo.next = self.shift_quo.q.val() << self.one.val();
         if self.fits.val() {
-            self.next_rem.next = self.shifted.val() - self.den.q.val();
             self.next_quo.next = (self.shift_quo.q.val() << self.one.val()) | self.one.val();
         }
         self.done_reg.d.next = false;

@@ -83,7 +83,7 @@
 //! the top of `dq` into 2R + b and one quotient bit into its bottom, so after S steps `dq`
 //! holds q = ⌊X·2^(F+1−s)/den⌋ (S bits, since R < den) without ever forming X·2^F. The
 //! trial 2R + b needs N + 1 bits: its top bit is R's, and 2R + b ≥ den is read off the
-//! borrow of one N-bit subtraction. The magnitude is (q + 1) >> 1; q all ones (which would
+//! borrow of one N-bit subtraction: the step is [`DivStep`](crate::arith::div_step::DivStep). The magnitude is (q + 1) >> 1; q all ones (which would
 //! round up past the format) and a preload not below den saturate to 2^(N+F) − 1. Rounding
 //! and sign share one adder: with h = q >> 1 and r = q & 1, the result is (h, or ~h if
 //! negative) + (r xor negative), as in [`SpeedCalc`](crate::SpeedCalc).
@@ -229,16 +229,8 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     mul_sum_msb: Signal<Local, Bit>,
     mul_carry: Signal<Local, Bit>,
     // Divider step.
-    dq_msb: Signal<Local, Bit>,
-    rem_msb: Signal<Local, Bit>,
-    /// 2R + b, N bits (its carry is `rem_msb`).
-    shifted: Signal<Local, Bits<N>>,
-    /// shifted − den (N bits, wrapping).
-    diff: Signal<Local, Bits<N>>,
-    shifted_msb: Signal<Local, Bit>,
-    den_msb: Signal<Local, Bit>,
-    /// shifted < den.
-    borrow: Signal<Local, Bit>,
+    /// One restoring division step at N bits.
+    div: crate::arith::div_step::DivStep<N>,
     fits: Signal<Local, Bit>,
     next_rem: Signal<Local, Bits<N>>,
     // Round and sign.
@@ -359,13 +351,7 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             mul_md_msb: Default::default(),
             mul_sum_msb: Default::default(),
             mul_carry: Default::default(),
-            dq_msb: Default::default(),
-            rem_msb: Default::default(),
-            shifted: Default::default(),
-            diff: Default::default(),
-            shifted_msb: Default::default(),
-            den_msb: Default::default(),
-            borrow: Default::default(),
+            div: Default::default(),
             fits: Default::default(),
             next_rem: Default::default(),
             sel_neg: Default::default(),
@@ -500,25 +486,13 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             & ((self.mul_a_msb.val() & self.mul_md_msb.val())
                 | ((self.mul_a_msb.val() | self.mul_md_msb.val()) & (!self.mul_sum_msb.val())));
 
-        // Divider step: bring down the top bit of dq, subtract if 2R + b ≥ den. R's top
-        // bit is the carry of 2R + b: if set, it fits; else compare by the borrow.
-        self.dq_msb.next = (self.dq.q.val() & self.s_msb.val()) != self.s_zero.val();
-        self.rem_msb.next = (self.part_rem.q.val() & self.n_msb.val()) != self.n_zero.val();
-        self.shifted.next = self.part_rem.q.val() << self.sh_one.val();
-        if self.dq_msb.val() {
-            self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.n_one.val();
-        }
-        self.diff.next = self.shifted.val() - self.den.q.val();
-        self.shifted_msb.next = (self.shifted.val() & self.n_msb.val()) != self.n_zero.val();
-        self.den_msb.next = (self.den.q.val() & self.n_msb.val()) != self.n_zero.val();
-        self.borrow.next = ((!self.shifted_msb.val()) & self.den_msb.val())
-            | ((!(self.shifted_msb.val() ^ self.den_msb.val()))
-                & ((self.diff.val() & self.n_msb.val()) != self.n_zero.val()));
-        self.fits.next = self.rem_msb.val() | (!self.borrow.val());
-        self.next_rem.next = self.shifted.val();
-        if self.fits.val() {
-            self.next_rem.next = self.diff.val();
-        }
+        // One restoring division step (DivStep): bring down the next numerator bit,
+        // subtract if 2R + b ≥ den.
+        self.div.rem.next = self.part_rem.q.val();
+        self.div.bit_in.next = (self.dq.q.val() & self.s_msb.val()) != self.s_zero.val();
+        self.div.den.next = self.den.q.val();
+        self.fits.next = self.div.fits.val();
+        self.next_rem.next = self.div.next_rem.val();
 
         // Round and sign with one adder: with q = dq, h = q >> 1 and r = q & 1, the result
         // is (h, or ~h if negative) + (r xor negative). q all ones would round past the

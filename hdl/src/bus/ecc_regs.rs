@@ -32,16 +32,25 @@
 //! Every output is a register or a function of registers only.
 //!
 //! # Implementation
-//! As `crate::WbRegs`: registers are 32 bits with reserved bits held at 0; narrow inputs are
-//! widened by shifting their bits in at the top and shifting down by a constant (a cast
-//! would be emitted as a mask of another width), and bit slices take literal offsets only.
+//! As [`crate::bus::wb_regs::WbRegs`]: a [`RegFile`] (front end, read data and the
+//! interrupt pair `ECC_IRQ_ENABLE`/`ECC_IRQ_STATUS`) and one cell per register of the map:
+//! [`ConstCell`]
+//! for the identification, [`RwCell`] for the staging registers `ECC_C`, `ECC_D`,
+//! [`PulseCell`] for `ECC_CTRL.IDENT_ARM`, [`ReadCell`] for the live words (the 72-bit
+//! sums as two plain words and a sign-extended top byte, `IDENT_P` as two fields at one
+//! offset) and [`ShadowCell`] for the two LO/HI speed pairs. This file's own: the
+//! interrupt events, the `ECC_STATUS` word, and `ECC_CTRL.LOAD`, which copies both staged
+//! coefficients to `ecc_c`, `ecc_d` at the edge of the write.
 
+use crate::bus::const_cell::ConstCell;
+use crate::bus::pulse_cell::PulseCell;
+use crate::bus::read_cell::ReadCell;
+use crate::bus::reg_file::RegFile;
+use crate::bus::rw_cell::RwCell;
+use crate::bus::shadow_cell::ShadowCell;
 use golden::bus::ecc_regmap::{self as m, ECC_CTRL, ECC_IRQ_STATUS, ECC_STATUS};
-use golden::bus::regmap::{Access, Register, ADDR_BITS, SPAN_BYTES};
+use golden::bus::regmap::{Register, ADDR_BITS};
 use rust_hdl::prelude::*;
-
-/// Width of the shift-amount constants.
-const SHIFT_BITS: usize = 8;
 
 /// The eccentricity window's Wishbone slave, speeds of S bits.
 #[derive(LogicBlock)]
@@ -102,112 +111,54 @@ pub struct EccRegs<const S: usize> {
     pub ident_sum_sin: Signal<In, Bits<72>>,
     /// Σ T·cos.
     pub ident_sum_cos: Signal<In, Bits<72>>,
-    // Registers.
-    ack: DFF<Bit>,
-    dat: DFF<Bits<32>>,
-    arm: DFF<Bit>,
-    stage_c: DFF<Bits<32>>,
-    stage_d: DFF<Bits<32>>,
+    // Front end, read data and the cells, in map order.
+    file: RegFile,
+    id: ConstCell,
+    version: ConstCell,
+    arm: PulseCell,
+    status: ReadCell<32>,
+    stage_c: RwCell<32>,
+    stage_d: RwCell<32>,
+    mtc: ShadowCell<S>,
+    n3c: ShadowCell<S>,
+    count: ReadCell<17>,
+    t_min: ReadCell<32>,
+    t_max: ReadCell<32>,
+    p_min: ReadCell<16>,
+    p_max: ReadCell<16>,
+    t0: ReadCell<32>,
+    t1: ReadCell<32>,
+    t2: ReadCell<8>,
+    s0: ReadCell<32>,
+    s1: ReadCell<32>,
+    s2: ReadCell<8>,
+    c0: ReadCell<32>,
+    c1: ReadCell<32>,
+    c2: ReadCell<8>,
+    // The loaded coefficients and the interrupt events.
     r_ecc_c: DFF<Bits<32>>,
     r_ecc_d: DFF<Bits<32>>,
-    irq_enable: DFF<Bits<32>>,
-    irq_status: DFF<Bits<32>>,
-    hi_mtc: DFF<Bits<32>>,
-    hi_n3c: DFF<Bits<32>>,
     prev_done: DFF<Bit>,
-    // Combinational.
-    adr: Signal<Local, Bits<ADDR_BITS>>,
-    req: Signal<Local, Bit>,
-    rd: Signal<Local, Bit>,
-    wr: Signal<Local, Bit>,
-    lanes: Signal<Local, Bits<32>>,
-    ones: Signal<Local, Bits<32>>,
-    rdata: Signal<Local, Bits<32>>,
-    irq_clear: Signal<Local, Bits<32>>,
+    status_word: Signal<Local, Bits<32>>,
     events: Signal<Local, Bits<32>>,
-    x_mtc: Signal<Local, Bits<64>>,
-    x_n3c: Signal<Local, Bits<64>>,
-    x_count: Signal<Local, Bits<32>>,
-    x_p: Signal<Local, Bits<32>>,
-    x_t2: Signal<Local, Bits<32>>,
-    x_s2: Signal<Local, Bits<32>>,
-    x_c2: Signal<Local, Bits<32>>,
-    // Offsets, from the map.
-    adr_mask: Constant<Bits<ADDR_BITS>>,
-    a_id: Constant<Bits<ADDR_BITS>>,
-    a_version: Constant<Bits<ADDR_BITS>>,
     a_ctrl: Constant<Bits<ADDR_BITS>>,
-    a_status: Constant<Bits<ADDR_BITS>>,
-    a_c: Constant<Bits<ADDR_BITS>>,
-    a_d: Constant<Bits<ADDR_BITS>>,
-    a_irq_enable: Constant<Bits<ADDR_BITS>>,
-    a_irq_status: Constant<Bits<ADDR_BITS>>,
-    a_mtc_lo: Constant<Bits<ADDR_BITS>>,
-    a_mtc_hi: Constant<Bits<ADDR_BITS>>,
-    a_n3c_lo: Constant<Bits<ADDR_BITS>>,
-    a_n3c_hi: Constant<Bits<ADDR_BITS>>,
-    a_count: Constant<Bits<ADDR_BITS>>,
-    a_t_min: Constant<Bits<ADDR_BITS>>,
-    a_t_max: Constant<Bits<ADDR_BITS>>,
-    a_p: Constant<Bits<ADDR_BITS>>,
-    a_t0: Constant<Bits<ADDR_BITS>>,
-    a_t1: Constant<Bits<ADDR_BITS>>,
-    a_t2: Constant<Bits<ADDR_BITS>>,
-    a_s0: Constant<Bits<ADDR_BITS>>,
-    a_s1: Constant<Bits<ADDR_BITS>>,
-    a_s2: Constant<Bits<ADDR_BITS>>,
-    a_c0: Constant<Bits<ADDR_BITS>>,
-    a_c1: Constant<Bits<ADDR_BITS>>,
-    a_c2: Constant<Bits<ADDR_BITS>>,
-    // Constant registers and field masks, from the map.
-    k_id: Constant<Bits<32>>,
-    k_version: Constant<Bits<32>>,
-    m_coef: Constant<Bits<32>>,
-    m_irq_enable: Constant<Bits<32>>,
-    m_irq_w1c: Constant<Bits<32>>,
-    f_arm: Constant<Bits<32>>,
     f_load: Constant<Bits<32>>,
     s_done: Constant<Bits<32>>,
     s_overflow: Constant<Bits<32>>,
     e_mtc: Constant<Bits<32>>,
     e_n3c: Constant<Bits<32>>,
     e_ident: Constant<Bits<32>>,
-    // Arithmetic constants.
-    lane0: Constant<Bits<32>>,
-    lane1: Constant<Bits<32>>,
-    lane2: Constant<Bits<32>>,
-    lane3: Constant<Bits<32>>,
     z32: Constant<Bits<32>>,
-    msb32: Constant<Bits<32>>,
-    /// Bits 31..8: the sign extension of a sum's top byte.
-    sext8: Constant<Bits<32>>,
-    z64: Constant<Bits<64>>,
-    msb64: Constant<Bits<64>>,
-    /// Bits 63..S: the sign extension of a speed.
-    sext: Constant<Bits<64>>,
-    sh_one: Constant<Bits<SHIFT_BITS>>,
-    /// 32 − 17, 32 − 8, 64 − S: shifts from the top down to bit 0.
-    sh_count: Constant<Bits<SHIFT_BITS>>,
-    sh_byte: Constant<Bits<SHIFT_BITS>>,
-    sh_s: Constant<Bits<SHIFT_BITS>>,
 }
 
 impl<const S: usize> EccRegs<S> {
     /// The window's slave for speeds of S bits.
     pub fn new() -> Self {
         assert!((11..=64).contains(&S), "speed_bits S = {S}: 11..=64");
-        assert_eq!(SPAN_BYTES, 1 << ADDR_BITS);
         let regs = m::registers(S as u32);
         let reg = |off: u32| -> &Register { regs.iter().find(|r| r.offset == off).unwrap() };
-        let a = |off: u32| -> Constant<Bits<ADDR_BITS>> { Constant::new(u64::from(off).into()) };
         let k = |v: u32| -> Constant<Bits<32>> { Constant::new(u64::from(v).into()) };
-        let f = |off: u32, name: &str| k(reg(off).field(name).mask());
-        let sh = |v: usize| -> Constant<Bits<SHIFT_BITS>> { Constant::new((v as u64).into()) };
-        let sext = if S == 64 { 0 } else { !((1u64 << S) - 1) };
-        assert_eq!(
-            reg(m::ECC_C).mask_of(Access::Rw),
-            reg(m::ECC_D).mask_of(Access::Rw)
-        );
+        let f = |off: u32, name: &str| reg(off).field(name).mask();
         Self {
             clock: Default::default(),
             reset: Default::default(),
@@ -237,86 +188,42 @@ impl<const S: usize> EccRegs<S> {
             ident_sum_t: Default::default(),
             ident_sum_sin: Default::default(),
             ident_sum_cos: Default::default(),
-            ack: Default::default(),
-            dat: Default::default(),
-            arm: Default::default(),
-            stage_c: Default::default(),
-            stage_d: Default::default(),
+            file: RegFile::new(reg(m::ECC_IRQ_ENABLE), reg(ECC_IRQ_STATUS)),
+            id: ConstCell::new(reg(m::ECC_ID)),
+            version: ConstCell::new(reg(m::ECC_VERSION)),
+            arm: PulseCell::new(reg(ECC_CTRL), f(ECC_CTRL, "IDENT_ARM")),
+            status: ReadCell::new(reg(ECC_STATUS)),
+            stage_c: RwCell::new(reg(m::ECC_C)),
+            stage_d: RwCell::new(reg(m::ECC_D)),
+            mtc: ShadowCell::new(reg(m::SPEED_MTC_LO), reg(m::SPEED_MTC_HI)),
+            n3c: ShadowCell::new(reg(m::SPEED_N3C_LO), reg(m::SPEED_N3C_HI)),
+            count: ReadCell::new(reg(m::IDENT_COUNT)),
+            t_min: ReadCell::new(reg(m::IDENT_T_MIN)),
+            t_max: ReadCell::new(reg(m::IDENT_T_MAX)),
+            p_min: ReadCell::field(reg(m::IDENT_P), "P_MIN"),
+            p_max: ReadCell::field(reg(m::IDENT_P), "P_MAX"),
+            t0: ReadCell::new(reg(m::IDENT_SUM_T_W0)),
+            t1: ReadCell::new(reg(m::IDENT_SUM_T_W1)),
+            t2: ReadCell::signed(reg(m::IDENT_SUM_T_W2)),
+            s0: ReadCell::new(reg(m::IDENT_SUM_SIN_W0)),
+            s1: ReadCell::new(reg(m::IDENT_SUM_SIN_W1)),
+            s2: ReadCell::signed(reg(m::IDENT_SUM_SIN_W2)),
+            c0: ReadCell::new(reg(m::IDENT_SUM_COS_W0)),
+            c1: ReadCell::new(reg(m::IDENT_SUM_COS_W1)),
+            c2: ReadCell::signed(reg(m::IDENT_SUM_COS_W2)),
             r_ecc_c: Default::default(),
             r_ecc_d: Default::default(),
-            irq_enable: Default::default(),
-            irq_status: Default::default(),
-            hi_mtc: Default::default(),
-            hi_n3c: Default::default(),
             prev_done: Default::default(),
-            adr: Default::default(),
-            req: Default::default(),
-            rd: Default::default(),
-            wr: Default::default(),
-            lanes: Default::default(),
-            ones: Default::default(),
-            rdata: Default::default(),
-            irq_clear: Default::default(),
+            status_word: Default::default(),
             events: Default::default(),
-            x_mtc: Default::default(),
-            x_n3c: Default::default(),
-            x_count: Default::default(),
-            x_p: Default::default(),
-            x_t2: Default::default(),
-            x_s2: Default::default(),
-            x_c2: Default::default(),
-            adr_mask: Constant::new(u64::from((SPAN_BYTES - 1) & !3).into()),
-            a_id: a(m::ECC_ID),
-            a_version: a(m::ECC_VERSION),
-            a_ctrl: a(ECC_CTRL),
-            a_status: a(ECC_STATUS),
-            a_c: a(m::ECC_C),
-            a_d: a(m::ECC_D),
-            a_irq_enable: a(m::ECC_IRQ_ENABLE),
-            a_irq_status: a(ECC_IRQ_STATUS),
-            a_mtc_lo: a(m::SPEED_MTC_LO),
-            a_mtc_hi: a(m::SPEED_MTC_HI),
-            a_n3c_lo: a(m::SPEED_N3C_LO),
-            a_n3c_hi: a(m::SPEED_N3C_HI),
-            a_count: a(m::IDENT_COUNT),
-            a_t_min: a(m::IDENT_T_MIN),
-            a_t_max: a(m::IDENT_T_MAX),
-            a_p: a(m::IDENT_P),
-            a_t0: a(m::IDENT_SUM_T_W0),
-            a_t1: a(m::IDENT_SUM_T_W1),
-            a_t2: a(m::IDENT_SUM_T_W2),
-            a_s0: a(m::IDENT_SUM_SIN_W0),
-            a_s1: a(m::IDENT_SUM_SIN_W1),
-            a_s2: a(m::IDENT_SUM_SIN_W2),
-            a_c0: a(m::IDENT_SUM_COS_W0),
-            a_c1: a(m::IDENT_SUM_COS_W1),
-            a_c2: a(m::IDENT_SUM_COS_W2),
-            k_id: k(reg(m::ECC_ID).reset.unwrap()),
-            k_version: k(reg(m::ECC_VERSION).reset.unwrap()),
-            m_coef: k(reg(m::ECC_C).mask_of(Access::Rw)),
-            m_irq_enable: k(reg(m::ECC_IRQ_ENABLE).mask_of(Access::Rw)),
-            m_irq_w1c: k(reg(ECC_IRQ_STATUS).mask_of(Access::W1c)),
-            f_arm: f(ECC_CTRL, "IDENT_ARM"),
-            f_load: f(ECC_CTRL, "LOAD"),
-            s_done: f(ECC_STATUS, "IDENT_DONE"),
-            s_overflow: f(ECC_STATUS, "IDENT_OVERFLOW"),
-            e_mtc: f(ECC_IRQ_STATUS, "MTC"),
-            e_n3c: f(ECC_IRQ_STATUS, "N3C"),
-            e_ident: f(ECC_IRQ_STATUS, "IDENT"),
-            lane0: k(0x0000_00FF),
-            lane1: k(0x0000_FF00),
-            lane2: k(0x00FF_0000),
-            lane3: k(0xFF00_0000),
+            a_ctrl: Constant::new(u64::from(ECC_CTRL).into()),
+            f_load: k(f(ECC_CTRL, "LOAD")),
+            s_done: k(f(ECC_STATUS, "IDENT_DONE")),
+            s_overflow: k(f(ECC_STATUS, "IDENT_OVERFLOW")),
+            e_mtc: k(f(ECC_IRQ_STATUS, "MTC")),
+            e_n3c: k(f(ECC_IRQ_STATUS, "N3C")),
+            e_ident: k(f(ECC_IRQ_STATUS, "IDENT")),
             z32: k(0),
-            msb32: k(1 << 31),
-            sext8: k(0xFFFF_FF00),
-            z64: Constant::new(0.into()),
-            msb64: Constant::new((1u64 << 63).into()),
-            sext: Constant::new(sext.into()),
-            sh_one: sh(1),
-            sh_count: sh(32 - 17),
-            sh_byte: sh(32 - 8),
-            sh_s: sh(64 - S),
         }
     }
 }
@@ -330,231 +237,126 @@ impl<const S: usize> Default for EccRegs<S> {
 impl<const S: usize> Logic for EccRegs<S> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clock, ack, dat, arm, stage_c, stage_d, r_ecc_c, r_ecc_d, irq_enable, irq_status,
-            hi_mtc, hi_n3c, prev_done
-        );
-        // Widen the speeds to 64 bits, sign-extended: shift their bits in at the top, then
-        // move them down and fill bits 63..S with the sign.
-        self.x_mtc.next = self.z64.val();
-        self.x_n3c.next = self.z64.val();
-        for i in 0..S {
-            self.x_mtc.next = self.x_mtc.val() >> self.sh_one.val();
-            if self.speed_mtc.val().get_bit(i) {
-                self.x_mtc.next = self.x_mtc.val() | self.msb64.val();
-            }
-            self.x_n3c.next = self.x_n3c.val() >> self.sh_one.val();
-            if self.speed_n3c.val().get_bit(i) {
-                self.x_n3c.next = self.x_n3c.val() | self.msb64.val();
-            }
-        }
-        if (self.x_mtc.val() & self.msb64.val()) != self.z64.val() {
-            self.x_mtc.next = (self.x_mtc.val() >> self.sh_s.val()) | self.sext.val();
-        } else {
-            self.x_mtc.next = self.x_mtc.val() >> self.sh_s.val();
-        }
-        if (self.x_n3c.val() & self.msb64.val()) != self.z64.val() {
-            self.x_n3c.next = (self.x_n3c.val() >> self.sh_s.val()) | self.sext.val();
-        } else {
-            self.x_n3c.next = self.x_n3c.val() >> self.sh_s.val();
-        }
-        // The count (17 bits) and the two line numbers (P_MIN low, P_MAX high).
-        self.x_count.next = self.z32.val();
-        for i in 0..17 {
-            self.x_count.next = self.x_count.val() >> self.sh_one.val();
-            if self.ident_count.val().get_bit(i) {
-                self.x_count.next = self.x_count.val() | self.msb32.val();
-            }
-        }
-        self.x_count.next = self.x_count.val() >> self.sh_count.val();
-        self.x_p.next = self.z32.val();
-        for i in 0..16 {
-            self.x_p.next = self.x_p.val() >> self.sh_one.val();
-            if self.ident_p_min.val().get_bit(i) {
-                self.x_p.next = self.x_p.val() | self.msb32.val();
-            }
-        }
-        for i in 0..16 {
-            self.x_p.next = self.x_p.val() >> self.sh_one.val();
-            if self.ident_p_max.val().get_bit(i) {
-                self.x_p.next = self.x_p.val() | self.msb32.val();
-            }
-        }
-        // Word 2 of each sum: bits 71:64, sign-extended.
-        self.x_t2.next = self.z32.val();
-        self.x_s2.next = self.z32.val();
-        self.x_c2.next = self.z32.val();
-        for i in 64..72 {
-            self.x_t2.next = self.x_t2.val() >> self.sh_one.val();
-            if self.ident_sum_t.val().get_bit(i) {
-                self.x_t2.next = self.x_t2.val() | self.msb32.val();
-            }
-            self.x_s2.next = self.x_s2.val() >> self.sh_one.val();
-            if self.ident_sum_sin.val().get_bit(i) {
-                self.x_s2.next = self.x_s2.val() | self.msb32.val();
-            }
-            self.x_c2.next = self.x_c2.val() >> self.sh_one.val();
-            if self.ident_sum_cos.val().get_bit(i) {
-                self.x_c2.next = self.x_c2.val() | self.msb32.val();
-            }
-        }
-        self.x_t2.next = self.x_t2.val() >> self.sh_byte.val();
-        if self.ident_sum_t.val().get_bit(71) {
-            self.x_t2.next = self.x_t2.val() | self.sext8.val();
-        }
-        self.x_s2.next = self.x_s2.val() >> self.sh_byte.val();
-        if self.ident_sum_sin.val().get_bit(71) {
-            self.x_s2.next = self.x_s2.val() | self.sext8.val();
-        }
-        self.x_c2.next = self.x_c2.val() >> self.sh_byte.val();
-        if self.ident_sum_cos.val().get_bit(71) {
-            self.x_c2.next = self.x_c2.val() | self.sext8.val();
-        }
+        dff_setup!(self, clock, r_ecc_c, r_ecc_d, prev_done);
+        clock!(self, clock, file, arm, stage_c, stage_d, mtc, n3c);
+        // The bus.
+        self.file.reset.next = self.reset.val();
+        self.file.wb_cyc_i.next = self.wb_cyc_i.val();
+        self.file.wb_stb_i.next = self.wb_stb_i.val();
+        self.file.wb_we_i.next = self.wb_we_i.val();
+        self.file.wb_adr_i.next = self.wb_adr_i.val();
+        self.file.wb_dat_i.next = self.wb_dat_i.val();
+        self.file.wb_sel_i.next = self.wb_sel_i.val();
+        self.wb_ack_o.next = self.file.wb_ack_o.val();
+        self.wb_dat_o.next = self.file.wb_dat_o.val();
+        self.irq.next = self.file.irq.val();
 
-        // The bus request.
-        self.adr.next = self.wb_adr_i.val() & self.adr_mask.val();
-        self.req.next = self.wb_cyc_i.val() & self.wb_stb_i.val() & (!self.ack.q.val());
-        self.rd.next = self.req.val() & (!self.wb_we_i.val());
-        self.wr.next = self.req.val() & self.wb_we_i.val();
-        self.lanes.next = self.z32.val();
-        if self.wb_sel_i.val().get_bit(0) {
-            self.lanes.next = self.lanes.val() | self.lane0.val();
-        }
-        if self.wb_sel_i.val().get_bit(1) {
-            self.lanes.next = self.lanes.val() | self.lane1.val();
-        }
-        if self.wb_sel_i.val().get_bit(2) {
-            self.lanes.next = self.lanes.val() | self.lane2.val();
-        }
-        if self.wb_sel_i.val().get_bit(3) {
-            self.lanes.next = self.lanes.val() | self.lane3.val();
-        }
-        self.ones.next = self.wb_dat_i.val() & self.lanes.val();
+        // Identification words.
+        self.id.adr.next = self.file.adr.val();
+        self.version.adr.next = self.file.adr.val();
 
-        // Read multiplexer: 0 at unmapped offsets (ECC_CTRL's pulses read 0).
-        self.rdata.next = self.z32.val();
-        if self.adr.val() == self.a_id.val() {
-            self.rdata.next = self.k_id.val();
+        // ECC_CTRL: IDENT_ARM pulses ident_arm; LOAD copies both staged coefficients (as
+        // they stood before this edge) to ecc_c, ecc_d.
+        self.arm.reset.next = self.reset.val();
+        self.arm.adr.next = self.file.adr.val();
+        self.arm.wr.next = self.file.wr.val();
+        self.arm.ones.next = self.file.ones.val();
+        self.ident_arm.next = self.arm.pulse.val();
+        if self.file.wr.val()
+            & (self.file.adr.val() == self.a_ctrl.val())
+            & ((self.file.ones.val() & self.f_load.val()) != self.z32.val())
+        {
+            self.r_ecc_c.d.next = self.stage_c.q.val();
+            self.r_ecc_d.d.next = self.stage_d.q.val();
         }
-        if self.adr.val() == self.a_version.val() {
-            self.rdata.next = self.k_version.val();
-        }
-        if self.adr.val() == self.a_status.val() {
-            if self.ident_done.val() {
-                self.rdata.next = self.rdata.val() | self.s_done.val();
-            }
-            if self.ident_overflow.val() {
-                self.rdata.next = self.rdata.val() | self.s_overflow.val();
-            }
-        }
-        if self.adr.val() == self.a_c.val() {
-            self.rdata.next = self.stage_c.q.val();
-        }
-        if self.adr.val() == self.a_d.val() {
-            self.rdata.next = self.stage_d.q.val();
-        }
-        if self.adr.val() == self.a_irq_enable.val() {
-            self.rdata.next = self.irq_enable.q.val();
-        }
-        if self.adr.val() == self.a_irq_status.val() {
-            self.rdata.next = self.irq_status.q.val();
-        }
-        if self.adr.val() == self.a_mtc_lo.val() {
-            self.rdata.next = self.x_mtc.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_mtc_hi.val() {
-            self.rdata.next = self.hi_mtc.q.val();
-        }
-        if self.adr.val() == self.a_n3c_lo.val() {
-            self.rdata.next = self.x_n3c.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_n3c_hi.val() {
-            self.rdata.next = self.hi_n3c.q.val();
-        }
-        if self.adr.val() == self.a_count.val() {
-            self.rdata.next = self.x_count.val();
-        }
-        if self.adr.val() == self.a_t_min.val() {
-            self.rdata.next = self.ident_t_min.val();
-        }
-        if self.adr.val() == self.a_t_max.val() {
-            self.rdata.next = self.ident_t_max.val();
-        }
-        if self.adr.val() == self.a_p.val() {
-            self.rdata.next = self.x_p.val();
-        }
-        if self.adr.val() == self.a_t0.val() {
-            self.rdata.next = self.ident_sum_t.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_t1.val() {
-            self.rdata.next = self.ident_sum_t.val().get_bits::<32>(32);
-        }
-        if self.adr.val() == self.a_t2.val() {
-            self.rdata.next = self.x_t2.val();
-        }
-        if self.adr.val() == self.a_s0.val() {
-            self.rdata.next = self.ident_sum_sin.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_s1.val() {
-            self.rdata.next = self.ident_sum_sin.val().get_bits::<32>(32);
-        }
-        if self.adr.val() == self.a_s2.val() {
-            self.rdata.next = self.x_s2.val();
-        }
-        if self.adr.val() == self.a_c0.val() {
-            self.rdata.next = self.ident_sum_cos.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_c1.val() {
-            self.rdata.next = self.ident_sum_cos.val().get_bits::<32>(32);
-        }
-        if self.adr.val() == self.a_c2.val() {
-            self.rdata.next = self.x_c2.val();
-        }
+        self.stage_c.reset.next = self.reset.val();
+        self.stage_c.adr.next = self.file.adr.val();
+        self.stage_c.wr.next = self.file.wr.val();
+        self.stage_c.lanes.next = self.file.lanes.val();
+        self.stage_c.ones.next = self.file.ones.val();
+        self.stage_d.reset.next = self.reset.val();
+        self.stage_d.adr.next = self.file.adr.val();
+        self.stage_d.wr.next = self.file.wr.val();
+        self.stage_d.lanes.next = self.file.lanes.val();
+        self.stage_d.ones.next = self.file.ones.val();
+        self.ecc_c.next = self.r_ecc_c.q.val();
+        self.ecc_d.next = self.r_ecc_d.q.val();
 
-        // Execute the request: ack and read data in the next cycle.
-        self.ack.d.next = self.req.val();
-        self.dat.d.next = self.z32.val();
-        if self.rd.val() {
-            self.dat.d.next = self.rdata.val();
-            // A LO read latches its HI word.
-            if self.adr.val() == self.a_mtc_lo.val() {
-                self.hi_mtc.d.next = self.x_mtc.val().get_bits::<32>(32);
-            }
-            if self.adr.val() == self.a_n3c_lo.val() {
-                self.hi_n3c.d.next = self.x_n3c.val().get_bits::<32>(32);
-            }
+        // ECC_STATUS, live.
+        self.status_word.next = self.z32.val();
+        if self.ident_done.val() {
+            self.status_word.next = self.status_word.val() | self.s_done.val();
         }
-        self.irq_clear.next = self.z32.val();
-        self.arm.d.next = false;
-        if self.wr.val() {
-            if self.adr.val() == self.a_ctrl.val() {
-                self.arm.d.next = (self.ones.val() & self.f_arm.val()) != self.z32.val();
-                // Both coefficients at once, from the staging registers before this edge.
-                if (self.ones.val() & self.f_load.val()) != self.z32.val() {
-                    self.r_ecc_c.d.next = self.stage_c.q.val();
-                    self.r_ecc_d.d.next = self.stage_d.q.val();
-                }
-            }
-            if self.adr.val() == self.a_c.val() {
-                self.stage_c.d.next = ((self.stage_c.q.val() & (!self.lanes.val()))
-                    | self.ones.val())
-                    & self.m_coef.val();
-            }
-            if self.adr.val() == self.a_d.val() {
-                self.stage_d.d.next = ((self.stage_d.q.val() & (!self.lanes.val()))
-                    | self.ones.val())
-                    & self.m_coef.val();
-            }
-            if self.adr.val() == self.a_irq_enable.val() {
-                self.irq_enable.d.next = ((self.irq_enable.q.val() & (!self.lanes.val()))
-                    | self.ones.val())
-                    & self.m_irq_enable.val();
-            }
-            if self.adr.val() == self.a_irq_status.val() {
-                self.irq_clear.next = self.ones.val() & self.m_irq_w1c.val();
-            }
+        if self.ident_overflow.val() {
+            self.status_word.next = self.status_word.val() | self.s_overflow.val();
         }
-        // Interrupt events; an event wins over a clear at the same edge.
+        self.status.adr.next = self.file.adr.val();
+        self.status.value.next = self.status_word.val();
+
+        // The corrected speeds: LO/HI pairs.
+        self.mtc.reset.next = self.reset.val();
+        self.mtc.adr.next = self.file.adr.val();
+        self.mtc.rd.next = self.file.rd.val();
+        self.mtc.value.next = self.speed_mtc.val();
+        self.n3c.reset.next = self.reset.val();
+        self.n3c.adr.next = self.file.adr.val();
+        self.n3c.rd.next = self.file.rd.val();
+        self.n3c.value.next = self.speed_n3c.val();
+
+        // Identification results, live; each sum as words 0, 1 and its sign-extended top byte.
+        self.count.adr.next = self.file.adr.val();
+        self.count.value.next = self.ident_count.val();
+        self.t_min.adr.next = self.file.adr.val();
+        self.t_min.value.next = self.ident_t_min.val();
+        self.t_max.adr.next = self.file.adr.val();
+        self.t_max.value.next = self.ident_t_max.val();
+        self.p_min.adr.next = self.file.adr.val();
+        self.p_min.value.next = self.ident_p_min.val();
+        self.p_max.adr.next = self.file.adr.val();
+        self.p_max.value.next = self.ident_p_max.val();
+        self.t0.adr.next = self.file.adr.val();
+        self.t0.value.next = self.ident_sum_t.val().get_bits::<32>(0);
+        self.t1.adr.next = self.file.adr.val();
+        self.t1.value.next = self.ident_sum_t.val().get_bits::<32>(32);
+        self.t2.adr.next = self.file.adr.val();
+        self.t2.value.next = self.ident_sum_t.val().get_bits::<8>(64);
+        self.s0.adr.next = self.file.adr.val();
+        self.s0.value.next = self.ident_sum_sin.val().get_bits::<32>(0);
+        self.s1.adr.next = self.file.adr.val();
+        self.s1.value.next = self.ident_sum_sin.val().get_bits::<32>(32);
+        self.s2.adr.next = self.file.adr.val();
+        self.s2.value.next = self.ident_sum_sin.val().get_bits::<8>(64);
+        self.c0.adr.next = self.file.adr.val();
+        self.c0.value.next = self.ident_sum_cos.val().get_bits::<32>(0);
+        self.c1.adr.next = self.file.adr.val();
+        self.c1.value.next = self.ident_sum_cos.val().get_bits::<32>(32);
+        self.c2.adr.next = self.file.adr.val();
+        self.c2.value.next = self.ident_sum_cos.val().get_bits::<8>(64);
+
+        // Read data: the cells' words (each 0 away from its offset; ECC_CTRL reads 0).
+        self.file.cells.next = self.id.rdata.val()
+            | self.version.rdata.val()
+            | self.status.rdata.val()
+            | self.stage_c.rdata.val()
+            | self.stage_d.rdata.val()
+            | self.mtc.rdata.val()
+            | self.n3c.rdata.val()
+            | self.count.rdata.val()
+            | self.t_min.rdata.val()
+            | self.t_max.rdata.val()
+            | self.p_min.rdata.val()
+            | self.p_max.rdata.val()
+            | self.t0.rdata.val()
+            | self.t1.rdata.val()
+            | self.t2.rdata.val()
+            | self.s0.rdata.val()
+            | self.s1.rdata.val()
+            | self.s2.rdata.val()
+            | self.c0.rdata.val()
+            | self.c1.rdata.val()
+            | self.c2.rdata.val();
+
+        // Interrupt events: the strobes and ident_done rising.
         self.events.next = self.z32.val();
         if self.mtc_strobe.val() {
             self.events.next = self.events.val() | self.e_mtc.val();
@@ -565,29 +367,12 @@ impl<const S: usize> Logic for EccRegs<S> {
         if self.ident_done.val() & (!self.prev_done.q.val()) {
             self.events.next = self.events.val() | self.e_ident.val();
         }
-        self.irq_status.d.next =
-            (self.irq_status.q.val() & (!self.irq_clear.val())) | self.events.val();
+        self.file.events.next = self.events.val();
         self.prev_done.d.next = self.ident_done.val();
         if self.reset.val() {
-            self.ack.d.next = false;
-            self.dat.d.next = self.z32.val();
-            self.arm.d.next = false;
-            self.stage_c.d.next = self.z32.val();
-            self.stage_d.d.next = self.z32.val();
             self.r_ecc_c.d.next = self.z32.val();
             self.r_ecc_d.d.next = self.z32.val();
-            self.irq_enable.d.next = self.z32.val();
-            self.irq_status.d.next = self.z32.val();
-            self.hi_mtc.d.next = self.z32.val();
-            self.hi_n3c.d.next = self.z32.val();
             self.prev_done.d.next = false;
         }
-        // Outputs: registers only.
-        self.wb_ack_o.next = self.ack.q.val();
-        self.wb_dat_o.next = self.dat.q.val();
-        self.irq.next = (self.irq_status.q.val() & self.irq_enable.q.val()) != self.z32.val();
-        self.ecc_c.next = self.r_ecc_c.q.val();
-        self.ecc_d.next = self.r_ecc_d.q.val();
-        self.ident_arm.next = self.arm.q.val();
     }
 }

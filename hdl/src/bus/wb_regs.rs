@@ -52,22 +52,28 @@
 //!
 //! # Implementation
 //!
-//! Configuration and interrupt registers are 32 bits wide with the reserved bits held at 0
-//! (synthesis removes those flops), so read-back needs no widening. Status inputs are
-//! widened to 32 (speeds: sign-extended to 64) by shifting their bits in at the top and
-//! shifting down by a constant, because rust-hdl emits casts as masks of another width
-//! that Verilator flags; after synthesis these are wires. `CTRL` fields are sliced at the
-//! offsets [`CTRL_MODE_LSB`], [`CTRL_Z_MODE_LSB`] through a one-pass loop variable (a const
-//! in a slice would be emitted as an undeclared identifier).
+//! A [`RegFile`] (the Wishbone front end, the registered read data and the interrupt pair
+//! `IRQ_ENABLE`/`IRQ_STATUS`) and one cell per register of the map, each built from the
+//! map's entry: [`ConstCell`] for the constants,
+//! [`RwCell`] for `CTRL` and the `CFG_*` words, [`ReadCell`] for the live words (the
+//! `STATUS` word is assembled here from the flags at the map's bit positions),
+//! [`ShadowCell`] for the six LO/HI speed pairs and [`PulseCell`] for `clear_faults`. What
+//! is this file's own: the interrupt events (strobes and rising edges of the fault flags
+//! and of `stalled`) and the slicing of `CTRL` into `cfg_mode`, `cfg_z_mode` at the map's
+//! [`CTRL_MODE_LSB`], [`CTRL_Z_MODE_LSB`] through a one-pass loop variable (a const in a
+//! slice would be emitted as an undeclared identifier).
 
+use crate::bus::const_cell::ConstCell;
+use crate::bus::pulse_cell::PulseCell;
+use crate::bus::read_cell::ReadCell;
+use crate::bus::reg_file::RegFile;
+use crate::bus::rw_cell::RwCell;
+use crate::bus::shadow_cell::ShadowCell;
 use golden::bus::regmap::{
-    Access, RegMap, ADDR_BITS, CTRL_MODE_LSB, CTRL_Z_MODE_LSB, MODE_BITS, SPAN_BYTES,
+    Access, RegMap, ADDR_BITS, CTRL_MODE_LSB, CTRL_Z_MODE_LSB, MODE_BITS, SPEEDS,
 };
 use golden::params::Params;
 use rust_hdl::prelude::*;
-
-/// Width of the shift-amount constants.
-const SHIFT_BITS: usize = 8;
 
 /// The `WbRegs` type for counter width `$n`, `$f` speed fraction bits, position width
 /// `$c`, filter width `$fb` and fault-counter width `$g`: `wb_regs_type!(24, 16, 32, 16, 16)`
@@ -78,6 +84,9 @@ macro_rules! wb_regs_type {
         $crate::bus::wb_regs::WbRegs<{ $n }, { $n + $f + 1 }, { $c }, { $fb }, { $g }>
     };
 }
+
+/// Width of `CTRL`'s RW fields (`MODE`, `Z_MODE`).
+const CTRL_BITS: usize = 4;
 
 /// Wishbone register file of `encspeed_core`.
 #[derive(LogicBlock)]
@@ -164,110 +173,44 @@ pub struct WbRegs<const N: usize, const S: usize, const C: usize, const FB: usiz
     pub illegal_count: Signal<In, Bits<G>>,
     /// Revolution errors (saturating).
     pub rev_error_count: Signal<In, Bits<G>>,
-    // Registers.
-    ack: DFF<Bit>,
-    dat: DFF<Bits<32>>,
-    ctrl: DFF<Bits<32>>,
-    r_cfg_dt: DFF<Bits<32>>,
-    r_cfg_timeout: DFF<Bits<32>>,
-    r_cfg_filter: DFF<Bits<32>>,
-    irq_enable: DFF<Bits<32>>,
-    irq_status: DFF<Bits<32>>,
-    hi_n1: DFF<Bits<32>>,
-    hi_n2: DFF<Bits<32>>,
-    hi_n3: DFF<Bits<32>>,
-    hi_pc: DFF<Bits<32>>,
-    hi_et: DFF<Bits<32>>,
-    hi_mt: DFF<Bits<32>>,
-    clear: DFF<Bit>,
+    // Front end, read data and the cells, in map order.
+    file: RegFile,
+    id: ConstCell,
+    version: ConstCell,
+    param0: ConstCell,
+    param1: ConstCell,
+    lines: ConstCell,
+    dt_default: ConstCell,
+    timeout_default: ConstCell,
+    clock_hz: ConstCell,
+    ctrl: RwCell<CTRL_BITS>,
+    r_cfg_dt: RwCell<N>,
+    r_cfg_timeout: RwCell<N>,
+    r_cfg_filter: RwCell<FB>,
+    status: ReadCell<32>,
+    fault_clear: PulseCell,
+    r_position: ReadCell<C>,
+    r_z_latch: ReadCell<C>,
+    r_nep: ReadCell<N>,
+    r_ndt: ReadCell<N>,
+    n1: ShadowCell<S>,
+    n2: ShadowCell<S>,
+    n3: ShadowCell<S>,
+    pc: ShadowCell<S>,
+    et: ShadowCell<S>,
+    mt: ShadowCell<S>,
+    glitch: ReadCell<G>,
+    illegal: ReadCell<G>,
+    rev: ReadCell<G>,
+    // Interrupt events: previous levels of the flags whose rising edges are events.
     prev_illegal: DFF<Bit>,
     prev_overspeed: DFF<Bit>,
     prev_revolution: DFF<Bit>,
     prev_stalled: DFF<Bit>,
-    // Combinational.
-    adr: Signal<Local, Bits<ADDR_BITS>>,
-    req: Signal<Local, Bit>,
-    rd: Signal<Local, Bit>,
-    wr: Signal<Local, Bit>,
-    lanes: Signal<Local, Bits<32>>,
-    ones: Signal<Local, Bits<32>>,
-    rdata: Signal<Local, Bits<32>>,
-    irq_clear: Signal<Local, Bits<32>>,
+    status_word: Signal<Local, Bits<32>>,
     events: Signal<Local, Bits<32>>,
     fault_rose: Signal<Local, Bit>,
-    /// Copies of the C- and G-bit inputs, shifted down one bit per step (a bit select
-    /// would be invalid Verilog on a 1-bit port).
-    t_position: Signal<Local, Bits<C>>,
-    t_z_latch: Signal<Local, Bits<C>>,
-    t_glitch: Signal<Local, Bits<G>>,
-    t_illegal: Signal<Local, Bits<G>>,
-    t_rev: Signal<Local, Bits<G>>,
-    x_position: Signal<Local, Bits<32>>,
-    x_z_latch: Signal<Local, Bits<32>>,
-    x_nep: Signal<Local, Bits<32>>,
-    x_ndt: Signal<Local, Bits<32>>,
-    x_glitch: Signal<Local, Bits<32>>,
-    x_illegal: Signal<Local, Bits<32>>,
-    x_rev: Signal<Local, Bits<32>>,
-    x_n1: Signal<Local, Bits<64>>,
-    x_n2: Signal<Local, Bits<64>>,
-    x_n3: Signal<Local, Bits<64>>,
-    x_pc: Signal<Local, Bits<64>>,
-    x_et: Signal<Local, Bits<64>>,
-    x_mt: Signal<Local, Bits<64>>,
-    // Offsets, from golden::bus::regmap.
-    adr_mask: Constant<Bits<ADDR_BITS>>,
-    a_id: Constant<Bits<ADDR_BITS>>,
-    a_version: Constant<Bits<ADDR_BITS>>,
-    a_param0: Constant<Bits<ADDR_BITS>>,
-    a_param1: Constant<Bits<ADDR_BITS>>,
-    a_lines: Constant<Bits<ADDR_BITS>>,
-    a_dt_default: Constant<Bits<ADDR_BITS>>,
-    a_timeout_default: Constant<Bits<ADDR_BITS>>,
-    a_clock_hz: Constant<Bits<ADDR_BITS>>,
-    a_ctrl: Constant<Bits<ADDR_BITS>>,
-    a_cfg_dt: Constant<Bits<ADDR_BITS>>,
-    a_cfg_timeout: Constant<Bits<ADDR_BITS>>,
-    a_cfg_filter: Constant<Bits<ADDR_BITS>>,
-    a_status: Constant<Bits<ADDR_BITS>>,
-    a_irq_enable: Constant<Bits<ADDR_BITS>>,
-    a_irq_status: Constant<Bits<ADDR_BITS>>,
-    a_position: Constant<Bits<ADDR_BITS>>,
-    a_z_latch: Constant<Bits<ADDR_BITS>>,
-    a_nep: Constant<Bits<ADDR_BITS>>,
-    a_ndt: Constant<Bits<ADDR_BITS>>,
-    a_n1_lo: Constant<Bits<ADDR_BITS>>,
-    a_n1_hi: Constant<Bits<ADDR_BITS>>,
-    a_n2_lo: Constant<Bits<ADDR_BITS>>,
-    a_n2_hi: Constant<Bits<ADDR_BITS>>,
-    a_n3_lo: Constant<Bits<ADDR_BITS>>,
-    a_n3_hi: Constant<Bits<ADDR_BITS>>,
-    a_pc_lo: Constant<Bits<ADDR_BITS>>,
-    a_pc_hi: Constant<Bits<ADDR_BITS>>,
-    a_et_lo: Constant<Bits<ADDR_BITS>>,
-    a_et_hi: Constant<Bits<ADDR_BITS>>,
-    a_mt_lo: Constant<Bits<ADDR_BITS>>,
-    a_mt_hi: Constant<Bits<ADDR_BITS>>,
-    a_glitch: Constant<Bits<ADDR_BITS>>,
-    a_illegal: Constant<Bits<ADDR_BITS>>,
-    a_rev: Constant<Bits<ADDR_BITS>>,
-    // Constant registers, from the map's reset values.
-    k_id: Constant<Bits<32>>,
-    k_version: Constant<Bits<32>>,
-    k_param0: Constant<Bits<32>>,
-    k_param1: Constant<Bits<32>>,
-    k_lines: Constant<Bits<32>>,
-    k_dt_default: Constant<Bits<32>>,
-    k_timeout_default: Constant<Bits<32>>,
-    k_clock_hz: Constant<Bits<32>>,
-    // Field masks, from the map.
-    m_ctrl: Constant<Bits<32>>,
-    m_cfg_dt: Constant<Bits<32>>,
-    m_cfg_timeout: Constant<Bits<32>>,
-    m_cfg_filter: Constant<Bits<32>>,
-    m_irq_enable: Constant<Bits<32>>,
-    m_irq_w1c: Constant<Bits<32>>,
-    m_fault_w1c: Constant<Bits<32>>,
+    // Bit positions, from the map.
     s_valid: Constant<Bits<32>>,
     s_stalled: Constant<Bits<32>>,
     s_direction: Constant<Bits<32>>,
@@ -281,27 +224,7 @@ pub struct WbRegs<const N: usize, const S: usize, const C: usize, const FB: usiz
     e_fault: Constant<Bits<32>>,
     e_update: Constant<Bits<32>>,
     e_stall: Constant<Bits<32>>,
-    // Arithmetic constants.
-    lane0: Constant<Bits<32>>,
-    lane1: Constant<Bits<32>>,
-    lane2: Constant<Bits<32>>,
-    lane3: Constant<Bits<32>>,
-    c_zero: Constant<Bits<C>>,
-    c_one: Constant<Bits<C>>,
-    g_zero: Constant<Bits<G>>,
-    g_one: Constant<Bits<G>>,
     z32: Constant<Bits<32>>,
-    msb32: Constant<Bits<32>>,
-    z64: Constant<Bits<64>>,
-    msb64: Constant<Bits<64>>,
-    /// Bits 63..S: the sign extension of a speed.
-    sext: Constant<Bits<64>>,
-    sh_one: Constant<Bits<SHIFT_BITS>>,
-    /// 32 − C, 32 − N, 32 − G, 64 − S: shifts from the top down to bit 0.
-    sh_c: Constant<Bits<SHIFT_BITS>>,
-    sh_n: Constant<Bits<SHIFT_BITS>>,
-    sh_g: Constant<Bits<SHIFT_BITS>>,
-    sh_s: Constant<Bits<SHIFT_BITS>>,
 }
 
 impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: usize>
@@ -335,17 +258,14 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         assert_eq!(ctrl.field("Z_MODE").lsb as usize, CTRL_Z_MODE_LSB);
         assert_eq!(ctrl.field("MODE").width, MODE_BITS);
         assert_eq!(ctrl.field("Z_MODE").width, MODE_BITS);
-        assert_eq!(SPAN_BYTES, 1 << ADDR_BITS);
-        let a = |name: &str| -> Constant<Bits<ADDR_BITS>> {
-            Constant::new(u64::from(map.reg(name).offset).into())
-        };
+        let r = |name: &str| map.reg(name);
         let k = |v: u32| -> Constant<Bits<32>> { Constant::new(u64::from(v).into()) };
-        let value = |name: &str| k(map.reg(name).reset.expect("a constant register"));
-        let rw = |name: &str| k(map.reg(name).mask_of(Access::Rw));
         let status = |field: &str| k(map.mask("STATUS", field));
         let event = |field: &str| k(map.mask("IRQ_STATUS", field));
-        let sh = |v: usize| -> Constant<Bits<SHIFT_BITS>> { Constant::new((v as u64).into()) };
-        let sext = if S == 64 { 0 } else { !((1u64 << S) - 1) };
+        let shadow = |k: usize| {
+            let (lo, hi, _) = SPEEDS[k];
+            ShadowCell::new(map.at(lo).unwrap(), map.at(hi).unwrap())
+        };
         Self {
             clock: Default::default(),
             reset: Default::default(),
@@ -388,103 +308,41 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             glitch_count: Default::default(),
             illegal_count: Default::default(),
             rev_error_count: Default::default(),
-            ack: Default::default(),
-            dat: Default::default(),
-            ctrl: Default::default(),
-            r_cfg_dt: Default::default(),
-            r_cfg_timeout: Default::default(),
-            r_cfg_filter: Default::default(),
-            irq_enable: Default::default(),
-            irq_status: Default::default(),
-            hi_n1: Default::default(),
-            hi_n2: Default::default(),
-            hi_n3: Default::default(),
-            hi_pc: Default::default(),
-            hi_et: Default::default(),
-            hi_mt: Default::default(),
-            clear: Default::default(),
+            file: RegFile::new(r("IRQ_ENABLE"), r("IRQ_STATUS")),
+            id: ConstCell::new(r("ID")),
+            version: ConstCell::new(r("VERSION")),
+            param0: ConstCell::new(r("PARAM0")),
+            param1: ConstCell::new(r("PARAM1")),
+            lines: ConstCell::new(r("LINES")),
+            dt_default: ConstCell::new(r("DT_DEFAULT")),
+            timeout_default: ConstCell::new(r("TIMEOUT_DEFAULT")),
+            clock_hz: ConstCell::new(r("CLOCK_HZ")),
+            ctrl: RwCell::new(ctrl),
+            r_cfg_dt: RwCell::new(r("CFG_DT")),
+            r_cfg_timeout: RwCell::new(r("CFG_TIMEOUT")),
+            r_cfg_filter: RwCell::new(r("CFG_FILTER")),
+            status: ReadCell::new(r("STATUS")),
+            fault_clear: PulseCell::new(r("STATUS"), r("STATUS").mask_of(Access::W1c)),
+            r_position: ReadCell::new(r("POSITION")),
+            r_z_latch: ReadCell::new(r("Z_LATCH")),
+            r_nep: ReadCell::new(r("NEP")),
+            r_ndt: ReadCell::new(r("NDT")),
+            n1: shadow(0),
+            n2: shadow(1),
+            n3: shadow(2),
+            pc: shadow(3),
+            et: shadow(4),
+            mt: shadow(5),
+            glitch: ReadCell::new(r("GLITCH_COUNT")),
+            illegal: ReadCell::new(r("ILLEGAL_COUNT")),
+            rev: ReadCell::new(r("REV_ERROR_COUNT")),
             prev_illegal: Default::default(),
             prev_overspeed: Default::default(),
             prev_revolution: Default::default(),
             prev_stalled: Default::default(),
-            adr: Default::default(),
-            req: Default::default(),
-            rd: Default::default(),
-            wr: Default::default(),
-            lanes: Default::default(),
-            ones: Default::default(),
-            rdata: Default::default(),
-            irq_clear: Default::default(),
+            status_word: Default::default(),
             events: Default::default(),
             fault_rose: Default::default(),
-            t_position: Default::default(),
-            t_z_latch: Default::default(),
-            t_glitch: Default::default(),
-            t_illegal: Default::default(),
-            t_rev: Default::default(),
-            x_position: Default::default(),
-            x_z_latch: Default::default(),
-            x_nep: Default::default(),
-            x_ndt: Default::default(),
-            x_glitch: Default::default(),
-            x_illegal: Default::default(),
-            x_rev: Default::default(),
-            x_n1: Default::default(),
-            x_n2: Default::default(),
-            x_n3: Default::default(),
-            x_pc: Default::default(),
-            x_et: Default::default(),
-            x_mt: Default::default(),
-            adr_mask: Constant::new(u64::from((SPAN_BYTES - 1) & !3).into()),
-            a_id: a("ID"),
-            a_version: a("VERSION"),
-            a_param0: a("PARAM0"),
-            a_param1: a("PARAM1"),
-            a_lines: a("LINES"),
-            a_dt_default: a("DT_DEFAULT"),
-            a_timeout_default: a("TIMEOUT_DEFAULT"),
-            a_clock_hz: a("CLOCK_HZ"),
-            a_ctrl: a("CTRL"),
-            a_cfg_dt: a("CFG_DT"),
-            a_cfg_timeout: a("CFG_TIMEOUT"),
-            a_cfg_filter: a("CFG_FILTER"),
-            a_status: a("STATUS"),
-            a_irq_enable: a("IRQ_ENABLE"),
-            a_irq_status: a("IRQ_STATUS"),
-            a_position: a("POSITION"),
-            a_z_latch: a("Z_LATCH"),
-            a_nep: a("NEP"),
-            a_ndt: a("NDT"),
-            a_n1_lo: a("SPEED_N1_LO"),
-            a_n1_hi: a("SPEED_N1_HI"),
-            a_n2_lo: a("SPEED_N2_LO"),
-            a_n2_hi: a("SPEED_N2_HI"),
-            a_n3_lo: a("SPEED_N3_LO"),
-            a_n3_hi: a("SPEED_N3_HI"),
-            a_pc_lo: a("SPEED_PC_LO"),
-            a_pc_hi: a("SPEED_PC_HI"),
-            a_et_lo: a("SPEED_ET_LO"),
-            a_et_hi: a("SPEED_ET_HI"),
-            a_mt_lo: a("SPEED_MT_LO"),
-            a_mt_hi: a("SPEED_MT_HI"),
-            a_glitch: a("GLITCH_COUNT"),
-            a_illegal: a("ILLEGAL_COUNT"),
-            a_rev: a("REV_ERROR_COUNT"),
-            k_id: value("ID"),
-            k_version: value("VERSION"),
-            k_param0: value("PARAM0"),
-            k_param1: value("PARAM1"),
-            k_lines: value("LINES"),
-            k_dt_default: value("DT_DEFAULT"),
-            k_timeout_default: value("TIMEOUT_DEFAULT"),
-            k_clock_hz: value("CLOCK_HZ"),
-            m_ctrl: rw("CTRL"),
-            m_cfg_dt: rw("CFG_DT"),
-            m_cfg_timeout: rw("CFG_TIMEOUT"),
-            m_cfg_filter: rw("CFG_FILTER"),
-            m_irq_enable: rw("IRQ_ENABLE"),
-            m_irq_w1c: k(map.reg("IRQ_STATUS").mask_of(Access::W1c)),
-            m_fault_w1c: k(map.reg("STATUS").mask_of(Access::W1c)),
             s_valid: status("VALID"),
             s_stalled: status("STALLED"),
             s_direction: status("DIRECTION"),
@@ -498,24 +356,7 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             e_fault: event("FAULT"),
             e_update: event("UPDATE"),
             e_stall: event("STALL"),
-            lane0: k(0x0000_00FF),
-            lane1: k(0x0000_FF00),
-            lane2: k(0x00FF_0000),
-            lane3: k(0xFF00_0000),
-            c_zero: Constant::new(0.into()),
-            c_one: Constant::new(1.into()),
-            g_zero: Constant::new(0.into()),
-            g_one: Constant::new(1.into()),
             z32: k(0),
-            msb32: k(1 << 31),
-            z64: Constant::new(0.into()),
-            msb64: Constant::new((1u64 << 63).into()),
-            sext: Constant::new(sext.into()),
-            sh_one: sh(1),
-            sh_c: sh(32 - C),
-            sh_n: sh(32 - N),
-            sh_g: sh(32 - G),
-            sh_s: sh(64 - S),
         }
     }
 }
@@ -528,357 +369,183 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         dff_setup!(
             self,
             clock,
-            ack,
-            dat,
-            ctrl,
-            r_cfg_dt,
-            r_cfg_timeout,
-            r_cfg_filter,
-            irq_enable,
-            irq_status,
-            hi_n1,
-            hi_n2,
-            hi_n3,
-            hi_pc,
-            hi_et,
-            hi_mt,
-            clear,
             prev_illegal,
             prev_overspeed,
             prev_revolution,
             prev_stalled
         );
-        // Widen the status values to 32 bits: shift their bits in at the top, LSB first,
-        // then move them down (a cast would be emitted as a mask of another width).
-        self.x_position.next = self.z32.val();
-        self.x_z_latch.next = self.z32.val();
-        self.t_position.next = self.position.val();
-        self.t_z_latch.next = self.z_latch.val();
-        for _i in 0..C {
-            self.x_position.next = self.x_position.val() >> self.sh_one.val();
-            if (self.t_position.val() & self.c_one.val()) != self.c_zero.val() {
-                self.x_position.next = self.x_position.val() | self.msb32.val();
-            }
-            self.t_position.next = self.t_position.val() >> self.sh_one.val();
-            self.x_z_latch.next = self.x_z_latch.val() >> self.sh_one.val();
-            if (self.t_z_latch.val() & self.c_one.val()) != self.c_zero.val() {
-                self.x_z_latch.next = self.x_z_latch.val() | self.msb32.val();
-            }
-            self.t_z_latch.next = self.t_z_latch.val() >> self.sh_one.val();
+        clock!(
+            self,
+            clock,
+            file,
+            ctrl,
+            r_cfg_dt,
+            r_cfg_timeout,
+            r_cfg_filter,
+            fault_clear,
+            n1,
+            n2,
+            n3,
+            pc,
+            et,
+            mt
+        );
+        // The bus.
+        self.file.reset.next = self.reset.val();
+        self.file.wb_cyc_i.next = self.wb_cyc_i.val();
+        self.file.wb_stb_i.next = self.wb_stb_i.val();
+        self.file.wb_we_i.next = self.wb_we_i.val();
+        self.file.wb_adr_i.next = self.wb_adr_i.val();
+        self.file.wb_dat_i.next = self.wb_dat_i.val();
+        self.file.wb_sel_i.next = self.wb_sel_i.val();
+        self.wb_ack_o.next = self.file.wb_ack_o.val();
+        self.wb_dat_o.next = self.file.wb_dat_o.val();
+        self.irq.next = self.file.irq.val();
+
+        // Constants.
+        self.id.adr.next = self.file.adr.val();
+        self.version.adr.next = self.file.adr.val();
+        self.param0.adr.next = self.file.adr.val();
+        self.param1.adr.next = self.file.adr.val();
+        self.lines.adr.next = self.file.adr.val();
+        self.dt_default.adr.next = self.file.adr.val();
+        self.timeout_default.adr.next = self.file.adr.val();
+        self.clock_hz.adr.next = self.file.adr.val();
+
+        // Configuration: CTRL and the CFG_* words drive the core's inputs.
+        self.ctrl.reset.next = self.reset.val();
+        self.ctrl.adr.next = self.file.adr.val();
+        self.ctrl.wr.next = self.file.wr.val();
+        self.ctrl.lanes.next = self.file.lanes.val();
+        self.ctrl.ones.next = self.file.ones.val();
+        self.r_cfg_dt.reset.next = self.reset.val();
+        self.r_cfg_dt.adr.next = self.file.adr.val();
+        self.r_cfg_dt.wr.next = self.file.wr.val();
+        self.r_cfg_dt.lanes.next = self.file.lanes.val();
+        self.r_cfg_dt.ones.next = self.file.ones.val();
+        self.r_cfg_timeout.reset.next = self.reset.val();
+        self.r_cfg_timeout.adr.next = self.file.adr.val();
+        self.r_cfg_timeout.wr.next = self.file.wr.val();
+        self.r_cfg_timeout.lanes.next = self.file.lanes.val();
+        self.r_cfg_timeout.ones.next = self.file.ones.val();
+        self.r_cfg_filter.reset.next = self.reset.val();
+        self.r_cfg_filter.adr.next = self.file.adr.val();
+        self.r_cfg_filter.wr.next = self.file.wr.val();
+        self.r_cfg_filter.lanes.next = self.file.lanes.val();
+        self.r_cfg_filter.ones.next = self.file.ones.val();
+        self.cfg_dt.next = self.r_cfg_dt.q.val();
+        self.cfg_timeout.next = self.r_cfg_timeout.q.val();
+        self.cfg_filter.next = self.r_cfg_filter.q.val();
+        // One pass each: the loop variable carries the map's offset into the slice.
+        for lsb in CTRL_MODE_LSB..(CTRL_MODE_LSB + 1) {
+            self.cfg_mode.next = self.ctrl.q.val().get_bits::<2>(lsb);
         }
-        self.x_position.next = self.x_position.val() >> self.sh_c.val();
-        self.x_z_latch.next = self.x_z_latch.val() >> self.sh_c.val();
-        self.x_nep.next = self.z32.val();
-        self.x_ndt.next = self.z32.val();
-        for i in 0..N {
-            self.x_nep.next = self.x_nep.val() >> self.sh_one.val();
-            if self.nep.val().get_bit(i) {
-                self.x_nep.next = self.x_nep.val() | self.msb32.val();
-            }
-            self.x_ndt.next = self.x_ndt.val() >> self.sh_one.val();
-            if self.ndt.val().get_bit(i) {
-                self.x_ndt.next = self.x_ndt.val() | self.msb32.val();
-            }
-        }
-        self.x_nep.next = self.x_nep.val() >> self.sh_n.val();
-        self.x_ndt.next = self.x_ndt.val() >> self.sh_n.val();
-        self.x_glitch.next = self.z32.val();
-        self.x_illegal.next = self.z32.val();
-        self.x_rev.next = self.z32.val();
-        self.t_glitch.next = self.glitch_count.val();
-        self.t_illegal.next = self.illegal_count.val();
-        self.t_rev.next = self.rev_error_count.val();
-        for _i in 0..G {
-            self.x_glitch.next = self.x_glitch.val() >> self.sh_one.val();
-            if (self.t_glitch.val() & self.g_one.val()) != self.g_zero.val() {
-                self.x_glitch.next = self.x_glitch.val() | self.msb32.val();
-            }
-            self.t_glitch.next = self.t_glitch.val() >> self.sh_one.val();
-            self.x_illegal.next = self.x_illegal.val() >> self.sh_one.val();
-            if (self.t_illegal.val() & self.g_one.val()) != self.g_zero.val() {
-                self.x_illegal.next = self.x_illegal.val() | self.msb32.val();
-            }
-            self.t_illegal.next = self.t_illegal.val() >> self.sh_one.val();
-            self.x_rev.next = self.x_rev.val() >> self.sh_one.val();
-            if (self.t_rev.val() & self.g_one.val()) != self.g_zero.val() {
-                self.x_rev.next = self.x_rev.val() | self.msb32.val();
-            }
-            self.t_rev.next = self.t_rev.val() >> self.sh_one.val();
-        }
-        self.x_glitch.next = self.x_glitch.val() >> self.sh_g.val();
-        self.x_illegal.next = self.x_illegal.val() >> self.sh_g.val();
-        self.x_rev.next = self.x_rev.val() >> self.sh_g.val();
-        // The speeds, sign-extended to 64 bits the same way.
-        self.x_n1.next = self.z64.val();
-        self.x_n2.next = self.z64.val();
-        self.x_n3.next = self.z64.val();
-        self.x_pc.next = self.z64.val();
-        self.x_et.next = self.z64.val();
-        self.x_mt.next = self.z64.val();
-        for i in 0..S {
-            self.x_n1.next = self.x_n1.val() >> self.sh_one.val();
-            if self.speed_n1.val().get_bit(i) {
-                self.x_n1.next = self.x_n1.val() | self.msb64.val();
-            }
-            self.x_n2.next = self.x_n2.val() >> self.sh_one.val();
-            if self.speed_n2.val().get_bit(i) {
-                self.x_n2.next = self.x_n2.val() | self.msb64.val();
-            }
-            self.x_n3.next = self.x_n3.val() >> self.sh_one.val();
-            if self.speed_n3.val().get_bit(i) {
-                self.x_n3.next = self.x_n3.val() | self.msb64.val();
-            }
-            self.x_pc.next = self.x_pc.val() >> self.sh_one.val();
-            if self.speed_pc.val().get_bit(i) {
-                self.x_pc.next = self.x_pc.val() | self.msb64.val();
-            }
-            self.x_et.next = self.x_et.val() >> self.sh_one.val();
-            if self.speed_et.val().get_bit(i) {
-                self.x_et.next = self.x_et.val() | self.msb64.val();
-            }
-            self.x_mt.next = self.x_mt.val() >> self.sh_one.val();
-            if self.speed_mt.val().get_bit(i) {
-                self.x_mt.next = self.x_mt.val() | self.msb64.val();
-            }
-        }
-        // Now each sign is bit 63: shift down, then fill bits 63..S with it.
-        if (self.x_n1.val() & self.msb64.val()) != self.z64.val() {
-            self.x_n1.next = (self.x_n1.val() >> self.sh_s.val()) | self.sext.val();
-        } else {
-            self.x_n1.next = self.x_n1.val() >> self.sh_s.val();
-        }
-        if (self.x_n2.val() & self.msb64.val()) != self.z64.val() {
-            self.x_n2.next = (self.x_n2.val() >> self.sh_s.val()) | self.sext.val();
-        } else {
-            self.x_n2.next = self.x_n2.val() >> self.sh_s.val();
-        }
-        if (self.x_n3.val() & self.msb64.val()) != self.z64.val() {
-            self.x_n3.next = (self.x_n3.val() >> self.sh_s.val()) | self.sext.val();
-        } else {
-            self.x_n3.next = self.x_n3.val() >> self.sh_s.val();
-        }
-        if (self.x_pc.val() & self.msb64.val()) != self.z64.val() {
-            self.x_pc.next = (self.x_pc.val() >> self.sh_s.val()) | self.sext.val();
-        } else {
-            self.x_pc.next = self.x_pc.val() >> self.sh_s.val();
-        }
-        if (self.x_et.val() & self.msb64.val()) != self.z64.val() {
-            self.x_et.next = (self.x_et.val() >> self.sh_s.val()) | self.sext.val();
-        } else {
-            self.x_et.next = self.x_et.val() >> self.sh_s.val();
-        }
-        if (self.x_mt.val() & self.msb64.val()) != self.z64.val() {
-            self.x_mt.next = (self.x_mt.val() >> self.sh_s.val()) | self.sext.val();
-        } else {
-            self.x_mt.next = self.x_mt.val() >> self.sh_s.val();
+        for lsb in CTRL_Z_MODE_LSB..(CTRL_Z_MODE_LSB + 1) {
+            self.cfg_z_mode.next = self.ctrl.q.val().get_bits::<2>(lsb);
         }
 
-        // The bus request.
-        self.adr.next = self.wb_adr_i.val() & self.adr_mask.val();
-        self.req.next = self.wb_cyc_i.val() & self.wb_stb_i.val() & (!self.ack.q.val());
-        self.rd.next = self.req.val() & (!self.wb_we_i.val());
-        self.wr.next = self.req.val() & self.wb_we_i.val();
-        self.lanes.next = self.z32.val();
-        if self.wb_sel_i.val().get_bit(0) {
-            self.lanes.next = self.lanes.val() | self.lane0.val();
+        // STATUS: the flags, live; a 1 written to a fault bit clears the core's faults.
+        self.status_word.next = self.z32.val();
+        if self.valid.val() {
+            self.status_word.next = self.status_word.val() | self.s_valid.val();
         }
-        if self.wb_sel_i.val().get_bit(1) {
-            self.lanes.next = self.lanes.val() | self.lane1.val();
+        if self.stalled.val() {
+            self.status_word.next = self.status_word.val() | self.s_stalled.val();
         }
-        if self.wb_sel_i.val().get_bit(2) {
-            self.lanes.next = self.lanes.val() | self.lane2.val();
+        if self.direction.val() {
+            self.status_word.next = self.status_word.val() | self.s_direction.val();
         }
-        if self.wb_sel_i.val().get_bit(3) {
-            self.lanes.next = self.lanes.val() | self.lane3.val();
+        if self.cfg_error.val() {
+            self.status_word.next = self.status_word.val() | self.s_cfg_error.val();
         }
-        self.ones.next = self.wb_dat_i.val() & self.lanes.val();
+        if self.fault_illegal.val() {
+            self.status_word.next = self.status_word.val() | self.s_fault_illegal.val();
+        }
+        if self.fault_overspeed.val() {
+            self.status_word.next = self.status_word.val() | self.s_fault_overspeed.val();
+        }
+        if self.fault_revolution.val() {
+            self.status_word.next = self.status_word.val() | self.s_fault_revolution.val();
+        }
+        self.status.adr.next = self.file.adr.val();
+        self.status.value.next = self.status_word.val();
+        self.fault_clear.reset.next = self.reset.val();
+        self.fault_clear.adr.next = self.file.adr.val();
+        self.fault_clear.wr.next = self.file.wr.val();
+        self.fault_clear.ones.next = self.file.ones.val();
+        self.clear_faults.next = self.fault_clear.pulse.val();
 
-        // Read multiplexer: 0 at unmapped offsets.
-        self.rdata.next = self.z32.val();
-        if self.adr.val() == self.a_id.val() {
-            self.rdata.next = self.k_id.val();
-        }
-        if self.adr.val() == self.a_version.val() {
-            self.rdata.next = self.k_version.val();
-        }
-        if self.adr.val() == self.a_param0.val() {
-            self.rdata.next = self.k_param0.val();
-        }
-        if self.adr.val() == self.a_param1.val() {
-            self.rdata.next = self.k_param1.val();
-        }
-        if self.adr.val() == self.a_lines.val() {
-            self.rdata.next = self.k_lines.val();
-        }
-        if self.adr.val() == self.a_dt_default.val() {
-            self.rdata.next = self.k_dt_default.val();
-        }
-        if self.adr.val() == self.a_timeout_default.val() {
-            self.rdata.next = self.k_timeout_default.val();
-        }
-        if self.adr.val() == self.a_clock_hz.val() {
-            self.rdata.next = self.k_clock_hz.val();
-        }
-        if self.adr.val() == self.a_ctrl.val() {
-            self.rdata.next = self.ctrl.q.val();
-        }
-        if self.adr.val() == self.a_cfg_dt.val() {
-            self.rdata.next = self.r_cfg_dt.q.val();
-        }
-        if self.adr.val() == self.a_cfg_timeout.val() {
-            self.rdata.next = self.r_cfg_timeout.q.val();
-        }
-        if self.adr.val() == self.a_cfg_filter.val() {
-            self.rdata.next = self.r_cfg_filter.q.val();
-        }
-        if self.adr.val() == self.a_status.val() {
-            if self.valid.val() {
-                self.rdata.next = self.rdata.val() | self.s_valid.val();
-            }
-            if self.stalled.val() {
-                self.rdata.next = self.rdata.val() | self.s_stalled.val();
-            }
-            if self.direction.val() {
-                self.rdata.next = self.rdata.val() | self.s_direction.val();
-            }
-            if self.cfg_error.val() {
-                self.rdata.next = self.rdata.val() | self.s_cfg_error.val();
-            }
-            if self.fault_illegal.val() {
-                self.rdata.next = self.rdata.val() | self.s_fault_illegal.val();
-            }
-            if self.fault_overspeed.val() {
-                self.rdata.next = self.rdata.val() | self.s_fault_overspeed.val();
-            }
-            if self.fault_revolution.val() {
-                self.rdata.next = self.rdata.val() | self.s_fault_revolution.val();
-            }
-        }
-        if self.adr.val() == self.a_irq_enable.val() {
-            self.rdata.next = self.irq_enable.q.val();
-        }
-        if self.adr.val() == self.a_irq_status.val() {
-            self.rdata.next = self.irq_status.q.val();
-        }
-        if self.adr.val() == self.a_position.val() {
-            self.rdata.next = self.x_position.val();
-        }
-        if self.adr.val() == self.a_z_latch.val() {
-            self.rdata.next = self.x_z_latch.val();
-        }
-        if self.adr.val() == self.a_nep.val() {
-            self.rdata.next = self.x_nep.val();
-        }
-        if self.adr.val() == self.a_ndt.val() {
-            self.rdata.next = self.x_ndt.val();
-        }
-        if self.adr.val() == self.a_n1_lo.val() {
-            self.rdata.next = self.x_n1.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_n1_hi.val() {
-            self.rdata.next = self.hi_n1.q.val();
-        }
-        if self.adr.val() == self.a_n2_lo.val() {
-            self.rdata.next = self.x_n2.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_n2_hi.val() {
-            self.rdata.next = self.hi_n2.q.val();
-        }
-        if self.adr.val() == self.a_n3_lo.val() {
-            self.rdata.next = self.x_n3.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_n3_hi.val() {
-            self.rdata.next = self.hi_n3.q.val();
-        }
-        if self.adr.val() == self.a_pc_lo.val() {
-            self.rdata.next = self.x_pc.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_pc_hi.val() {
-            self.rdata.next = self.hi_pc.q.val();
-        }
-        if self.adr.val() == self.a_et_lo.val() {
-            self.rdata.next = self.x_et.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_et_hi.val() {
-            self.rdata.next = self.hi_et.q.val();
-        }
-        if self.adr.val() == self.a_mt_lo.val() {
-            self.rdata.next = self.x_mt.val().get_bits::<32>(0);
-        }
-        if self.adr.val() == self.a_mt_hi.val() {
-            self.rdata.next = self.hi_mt.q.val();
-        }
-        if self.adr.val() == self.a_glitch.val() {
-            self.rdata.next = self.x_glitch.val();
-        }
-        if self.adr.val() == self.a_illegal.val() {
-            self.rdata.next = self.x_illegal.val();
-        }
-        if self.adr.val() == self.a_rev.val() {
-            self.rdata.next = self.x_rev.val();
-        }
+        // Live words.
+        self.r_position.adr.next = self.file.adr.val();
+        self.r_position.value.next = self.position.val();
+        self.r_z_latch.adr.next = self.file.adr.val();
+        self.r_z_latch.value.next = self.z_latch.val();
+        self.r_nep.adr.next = self.file.adr.val();
+        self.r_nep.value.next = self.nep.val();
+        self.r_ndt.adr.next = self.file.adr.val();
+        self.r_ndt.value.next = self.ndt.val();
+        self.glitch.adr.next = self.file.adr.val();
+        self.glitch.value.next = self.glitch_count.val();
+        self.illegal.adr.next = self.file.adr.val();
+        self.illegal.value.next = self.illegal_count.val();
+        self.rev.adr.next = self.file.adr.val();
+        self.rev.value.next = self.rev_error_count.val();
 
-        // Execute the request: ack and read data in the next cycle.
-        self.ack.d.next = self.req.val();
-        self.dat.d.next = self.z32.val();
-        if self.rd.val() {
-            self.dat.d.next = self.rdata.val();
-            // A LO read latches its HI word.
-            if self.adr.val() == self.a_n1_lo.val() {
-                self.hi_n1.d.next = self.x_n1.val().get_bits::<32>(32);
-            }
-            if self.adr.val() == self.a_n2_lo.val() {
-                self.hi_n2.d.next = self.x_n2.val().get_bits::<32>(32);
-            }
-            if self.adr.val() == self.a_n3_lo.val() {
-                self.hi_n3.d.next = self.x_n3.val().get_bits::<32>(32);
-            }
-            if self.adr.val() == self.a_pc_lo.val() {
-                self.hi_pc.d.next = self.x_pc.val().get_bits::<32>(32);
-            }
-            if self.adr.val() == self.a_et_lo.val() {
-                self.hi_et.d.next = self.x_et.val().get_bits::<32>(32);
-            }
-            if self.adr.val() == self.a_mt_lo.val() {
-                self.hi_mt.d.next = self.x_mt.val().get_bits::<32>(32);
-            }
-        }
-        self.irq_clear.next = self.z32.val();
-        self.clear.d.next = false;
-        if self.wr.val() {
-            if self.adr.val() == self.a_ctrl.val() {
-                self.ctrl.d.next = ((self.ctrl.q.val() & (!self.lanes.val())) | self.ones.val())
-                    & self.m_ctrl.val();
-            }
-            if self.adr.val() == self.a_cfg_dt.val() {
-                self.r_cfg_dt.d.next = ((self.r_cfg_dt.q.val() & (!self.lanes.val()))
-                    | self.ones.val())
-                    & self.m_cfg_dt.val();
-            }
-            if self.adr.val() == self.a_cfg_timeout.val() {
-                self.r_cfg_timeout.d.next = ((self.r_cfg_timeout.q.val() & (!self.lanes.val()))
-                    | self.ones.val())
-                    & self.m_cfg_timeout.val();
-            }
-            if self.adr.val() == self.a_cfg_filter.val() {
-                self.r_cfg_filter.d.next = ((self.r_cfg_filter.q.val() & (!self.lanes.val()))
-                    | self.ones.val())
-                    & self.m_cfg_filter.val();
-            }
-            if self.adr.val() == self.a_irq_enable.val() {
-                self.irq_enable.d.next = ((self.irq_enable.q.val() & (!self.lanes.val()))
-                    | self.ones.val())
-                    & self.m_irq_enable.val();
-            }
-            if self.adr.val() == self.a_irq_status.val() {
-                self.irq_clear.next = self.ones.val() & self.m_irq_w1c.val();
-            }
-            if self.adr.val() == self.a_status.val() {
-                self.clear.d.next = (self.ones.val() & self.m_fault_w1c.val()) != self.z32.val();
-            }
-        }
+        // The speeds: LO/HI pairs.
+        self.n1.reset.next = self.reset.val();
+        self.n1.adr.next = self.file.adr.val();
+        self.n1.rd.next = self.file.rd.val();
+        self.n1.value.next = self.speed_n1.val();
+        self.n2.reset.next = self.reset.val();
+        self.n2.adr.next = self.file.adr.val();
+        self.n2.rd.next = self.file.rd.val();
+        self.n2.value.next = self.speed_n2.val();
+        self.n3.reset.next = self.reset.val();
+        self.n3.adr.next = self.file.adr.val();
+        self.n3.rd.next = self.file.rd.val();
+        self.n3.value.next = self.speed_n3.val();
+        self.pc.reset.next = self.reset.val();
+        self.pc.adr.next = self.file.adr.val();
+        self.pc.rd.next = self.file.rd.val();
+        self.pc.value.next = self.speed_pc.val();
+        self.et.reset.next = self.reset.val();
+        self.et.adr.next = self.file.adr.val();
+        self.et.rd.next = self.file.rd.val();
+        self.et.value.next = self.speed_et.val();
+        self.mt.reset.next = self.reset.val();
+        self.mt.adr.next = self.file.adr.val();
+        self.mt.rd.next = self.file.rd.val();
+        self.mt.value.next = self.speed_mt.val();
 
-        // Interrupt events; an event wins over a clear at the same edge.
+        // Read data: the cells' words (each 0 away from its offset).
+        self.file.cells.next = self.id.rdata.val()
+            | self.version.rdata.val()
+            | self.param0.rdata.val()
+            | self.param1.rdata.val()
+            | self.lines.rdata.val()
+            | self.dt_default.rdata.val()
+            | self.timeout_default.rdata.val()
+            | self.clock_hz.rdata.val()
+            | self.ctrl.rdata.val()
+            | self.r_cfg_dt.rdata.val()
+            | self.r_cfg_timeout.rdata.val()
+            | self.r_cfg_filter.rdata.val()
+            | self.status.rdata.val()
+            | self.r_position.rdata.val()
+            | self.r_z_latch.rdata.val()
+            | self.r_nep.rdata.val()
+            | self.r_ndt.rdata.val()
+            | self.n1.rdata.val()
+            | self.n2.rdata.val()
+            | self.n3.rdata.val()
+            | self.pc.rdata.val()
+            | self.et.rdata.val()
+            | self.mt.rdata.val()
+            | self.glitch.rdata.val()
+            | self.illegal.rdata.val()
+            | self.rev.rdata.val();
+
+        // Interrupt events: the strobes and the rising edges of the faults and of stalled.
         self.fault_rose.next = (self.fault_illegal.val() & (!self.prev_illegal.q.val()))
             | (self.fault_overspeed.val() & (!self.prev_overspeed.q.val()))
             | (self.fault_revolution.val() & (!self.prev_revolution.q.val()));
@@ -901,50 +568,17 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         if self.stalled.val() & (!self.prev_stalled.q.val()) {
             self.events.next = self.events.val() | self.e_stall.val();
         }
-        self.irq_status.d.next =
-            (self.irq_status.q.val() & (!self.irq_clear.val())) | self.events.val();
+        self.file.events.next = self.events.val();
         self.prev_illegal.d.next = self.fault_illegal.val();
         self.prev_overspeed.d.next = self.fault_overspeed.val();
         self.prev_revolution.d.next = self.fault_revolution.val();
         self.prev_stalled.d.next = self.stalled.val();
-
         if self.reset.val() {
-            self.ack.d.next = false;
-            self.dat.d.next = self.z32.val();
-            self.ctrl.d.next = self.z32.val();
-            self.r_cfg_dt.d.next = self.z32.val();
-            self.r_cfg_timeout.d.next = self.z32.val();
-            self.r_cfg_filter.d.next = self.z32.val();
-            self.irq_enable.d.next = self.z32.val();
-            self.irq_status.d.next = self.z32.val();
-            self.hi_n1.d.next = self.z32.val();
-            self.hi_n2.d.next = self.z32.val();
-            self.hi_n3.d.next = self.z32.val();
-            self.hi_pc.d.next = self.z32.val();
-            self.hi_et.d.next = self.z32.val();
-            self.hi_mt.d.next = self.z32.val();
-            self.clear.d.next = false;
             self.prev_illegal.d.next = false;
             self.prev_overspeed.d.next = false;
             self.prev_revolution.d.next = false;
             self.prev_stalled.d.next = false;
         }
-
-        // Outputs: registers only.
-        self.wb_ack_o.next = self.ack.q.val();
-        self.wb_dat_o.next = self.dat.q.val();
-        self.irq.next = (self.irq_status.q.val() & self.irq_enable.q.val()) != self.z32.val();
-        self.cfg_dt.next = self.r_cfg_dt.q.val().get_bits::<N>(0);
-        self.cfg_timeout.next = self.r_cfg_timeout.q.val().get_bits::<N>(0);
-        self.cfg_filter.next = self.r_cfg_filter.q.val().get_bits::<FB>(0);
-        // One pass each: the loop variable carries the map's offset into the slice.
-        for lsb in CTRL_MODE_LSB..(CTRL_MODE_LSB + 1) {
-            self.cfg_mode.next = self.ctrl.q.val().get_bits::<2>(lsb);
-        }
-        for lsb in CTRL_Z_MODE_LSB..(CTRL_Z_MODE_LSB + 1) {
-            self.cfg_z_mode.next = self.ctrl.q.val().get_bits::<2>(lsb);
-        }
-        self.clear_faults.next = self.clear.q.val();
     }
 }
 

@@ -76,7 +76,8 @@
 //!   does not fit falls off the bottom). The saturation flag is A >> (16 + s) ≥ t (checked as
 //!   "bits from N up non-zero, or the low N bits ≥ t").
 //! * **DIV ×S**: restoring steps: the top bit of `dq` comes down into 2R + b, which is
-//!   compared with t by the borrow of one N-bit subtraction (R's top bit is its carry), and
+//!   compared with t by the borrow of one N-bit subtraction (R's top bit is its carry:
+//!   [`DivStep`](crate::arith::div_step::DivStep)), and
 //!   the quotient bit goes in at the bottom; after S steps `dq` = q.
 //! * **FINISH**: round and sign with one S-bit adder — h = q >> 1, r = q & 1 (dropped when q
 //!   is all ones, which would round past the format); saturation: h = 2^(N+F) − 1, r = 0;
@@ -235,16 +236,8 @@ pub struct EccMtSpeed<const N: usize, const F: usize, const S: usize, const C: u
     load_rem: Signal<Local, Bits<N>>,
     load_dq: Signal<Local, Bits<S>>,
     // Divider step.
-    dq_msb: Signal<Local, Bit>,
-    rem_msb: Signal<Local, Bit>,
-    /// 2R + b, N bits (its carry is `rem_msb`).
-    shifted: Signal<Local, Bits<N>>,
-    /// shifted − den (N bits, wrapping).
-    diff: Signal<Local, Bits<N>>,
-    shifted_msb: Signal<Local, Bit>,
-    den_msb: Signal<Local, Bit>,
-    /// shifted < den.
-    borrow: Signal<Local, Bit>,
+    /// One restoring division step at N bits.
+    div: crate::arith::div_step::DivStep<N>,
     fits: Signal<Local, Bit>,
     next_rem: Signal<Local, Bits<N>>,
     // Round and sign.
@@ -372,13 +365,7 @@ impl<const N: usize, const F: usize, const S: usize, const C: usize> Default
             pre_hi: Default::default(),
             load_rem: Default::default(),
             load_dq: Default::default(),
-            dq_msb: Default::default(),
-            rem_msb: Default::default(),
-            shifted: Default::default(),
-            diff: Default::default(),
-            shifted_msb: Default::default(),
-            den_msb: Default::default(),
-            borrow: Default::default(),
+            div: Default::default(),
             fits: Default::default(),
             next_rem: Default::default(),
             half: Default::default(),
@@ -537,25 +524,13 @@ impl<const N: usize, const F: usize, const S: usize, const C: usize> Logic
             }
         }
 
-        // Divider step: bring down the top bit of dq, subtract if 2R + b ≥ den. R's top
-        // bit is the carry of 2R + b: if set, it fits; else compare by the borrow.
-        self.dq_msb.next = (self.dq.q.val() & self.s_msb.val()) != self.s_zero.val();
-        self.rem_msb.next = (self.part_rem.q.val() & self.n_msb.val()) != self.n_zero.val();
-        self.shifted.next = self.part_rem.q.val() << self.sh_one.val();
-        if self.dq_msb.val() {
-            self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.n_one.val();
-        }
-        self.diff.next = self.shifted.val() - self.den.q.val();
-        self.shifted_msb.next = (self.shifted.val() & self.n_msb.val()) != self.n_zero.val();
-        self.den_msb.next = (self.den.q.val() & self.n_msb.val()) != self.n_zero.val();
-        self.borrow.next = ((!self.shifted_msb.val()) & self.den_msb.val())
-            | ((!(self.shifted_msb.val() ^ self.den_msb.val()))
-                & ((self.diff.val() & self.n_msb.val()) != self.n_zero.val()));
-        self.fits.next = self.rem_msb.val() | (!self.borrow.val());
-        self.next_rem.next = self.shifted.val();
-        if self.fits.val() {
-            self.next_rem.next = self.diff.val();
-        }
+        // One restoring division step (DivStep): bring down the next numerator bit,
+        // subtract if 2R + b ≥ den.
+        self.div.rem.next = self.part_rem.q.val();
+        self.div.bit_in.next = (self.dq.q.val() & self.s_msb.val()) != self.s_zero.val();
+        self.div.den.next = self.den.q.val();
+        self.fits.next = self.div.fits.val();
+        self.next_rem.next = self.div.next_rem.val();
 
         // Round and sign with one adder: with q = dq, h = q >> 1 and r = q & 1, the result
         // is (h, or ~h if negative) + (r xor negative). q all ones would round past the

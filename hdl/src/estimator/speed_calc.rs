@@ -73,8 +73,8 @@
 //! Widths never change inside an expression (rust-hdl emits literals 32 bits wide and
 //! casts as masks that Verilator flags), so the N-bit request is widened to P bits by a
 //! shift-in loop (wires after synthesis) and every constant is a `Constant` of its
-//! operand's width. The divider's comparison shifted ≥ den is read off the borrow of the
-//! one subtraction it needs (from the top bits of the operands and the difference), and
+//! operand's width. The divider's step is [`DivStep`](crate::arith::div_step::DivStep)
+//! (shifted ≥ den read off the borrow of the one subtraction it needs), and
 //! rounding and sign share one adder: with h = q >> 1 and r = q & 1 the result is
 //! h + r, or −(h + r) = ~h + (1 − r), i.e. (h or ~h) + (r xor `negative`).
 //!
@@ -174,13 +174,8 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     high: Signal<Local, Bit>,
     num_sel: Signal<Local, Bits<P>>,
     den_sel: Signal<Local, Bits<P>>,
-    shifted: Signal<Local, Bits<P>>,
-    /// shifted − den (P bits, wrapping).
-    diff: Signal<Local, Bits<P>>,
-    shifted_msb: Signal<Local, Bit>,
-    den_msb: Signal<Local, Bit>,
-    /// shifted < den.
-    borrow: Signal<Local, Bit>,
+    /// One restoring division step at P bits.
+    div: crate::arith::div_step::DivStep<P>,
     fits: Signal<Local, Bit>,
     next_rem: Signal<Local, Bits<P>>,
     x_bit: Signal<Local, Bit>,
@@ -280,11 +275,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             high: Default::default(),
             num_sel: Default::default(),
             den_sel: Default::default(),
-            shifted: Default::default(),
-            diff: Default::default(),
-            shifted_msb: Default::default(),
-            den_msb: Default::default(),
-            borrow: Default::default(),
+            div: Default::default(),
             fits: Default::default(),
             next_rem: Default::default(),
             x_bit: Default::default(),
@@ -371,25 +362,13 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             }
         }
 
-        // One restoring step: bring down the top bit of num_shift, subtract if it fits.
-        self.shifted.next = self.part_rem.q.val() << self.sh_one.val();
-        if (self.num_shift.q.val() & self.p_msb.val()) != self.p_zero.val() {
-            self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.p_one.val();
-        }
-        // shifted ≥ den from the borrow of shifted − den, read off the top bits of the
-        // operands and the difference: one subtractor, no separate comparator.
-        self.diff.next = self.shifted.val() - self.den.q.val();
-        self.shifted_msb.next = (self.shifted.val() & self.p_msb.val()) != self.p_zero.val();
-        self.den_msb.next = (self.den.q.val() & self.p_msb.val()) != self.p_zero.val();
-        self.borrow.next = ((!self.shifted_msb.val()) & self.den_msb.val())
-            | ((!(self.shifted_msb.val() ^ self.den_msb.val()))
-                & ((self.diff.val() & self.p_msb.val()) != self.p_zero.val()));
-        self.fits.next = ((self.part_rem.q.val() & self.p_msb.val()) != self.p_zero.val())
-            | (!self.borrow.val());
-        self.next_rem.next = self.shifted.val();
-        if self.fits.val() {
-            self.next_rem.next = self.diff.val();
-        }
+        // One restoring division step (DivStep): bring down the next numerator bit,
+        // subtract if 2R + b ≥ den.
+        self.div.rem.next = self.part_rem.q.val();
+        self.div.bit_in.next = (self.num_shift.q.val() & self.p_msb.val()) != self.p_zero.val();
+        self.div.den.next = self.den.q.val();
+        self.fits.next = self.div.fits.val();
+        self.next_rem.next = self.div.next_rem.val();
         self.x_bit.next = (self.mul_x.q.val() & self.p_x_msb.val()) != self.p_zero.val();
 
         // Round and sign with one adder. With q the last quotient, h = q >> 1 and r = q & 1,

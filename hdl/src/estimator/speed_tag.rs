@@ -14,7 +14,8 @@
 //! 1. running: `remaining` − 1; at 0 the active tag is published (`valid` for one cycle);
 //!    idle with a pending request: it begins (`remaining` = latency − 1);
 //! 2. `start` latches the inputs as the pending request (a newer one replaces it);
-//! 3. `reset` abandons both and publishes nothing.
+//! 3. `reset` abandons both and publishes nothing: `valid` stays low and `tag_*` keep the
+//!    last published request, also on the edge that would have published.
 //!
 //! Ports: `clock`, `reset`, `start`, `position[31:0]`, `nep[N-1:0]`, `ndt[N-1:0]` in;
 //! registered `tag_position`, `tag_nep`, `tag_ndt` (held) and `valid` out.
@@ -155,6 +156,11 @@ impl<const N: usize> Logic for SpeedTag<N> {
             self.pending.d.next = false;
             self.running.d.next = false;
             self.out_valid.d.next = false;
+            // Nothing is published at a reset, not even on the edge that would have
+            // published: the held tag stays the last one published (as the model's).
+            self.out_position.d.next = self.out_position.q.val();
+            self.out_nep.d.next = self.out_nep.q.val();
+            self.out_ndt.d.next = self.out_ndt.q.val();
         }
         self.tag_position.next = self.out_position.q.val();
         self.tag_nep.next = self.out_nep.q.val();

@@ -9,7 +9,7 @@
 
 use crate::common::{
     self,
-    steps::{long_stimulus, stimulus, Cycle},
+    steps::{self, long_stimulus, Cycle},
 };
 use golden::baselines::et_timer::{EtInputs, EtOutputs, EtTimer as EtModel};
 use hdl::{et_timer_verilog, EtTimer};
@@ -41,32 +41,15 @@ fn compare_et<const N: usize>(cycles: &[Cycle]) -> Result<(), TestCaseError> {
     let mut uut = EtTimer::<N>::default();
     uut.connect_all();
     let mut model = EtModel::new(N as u32);
-    for (k, c) in cycles.iter().enumerate() {
-        let want = model.step(et_inputs(c));
-        prop_assert_eq!(et_step(&mut uut, c), want, "N = {}, edge {}, {:?}", N, k, c);
-    }
-    Ok(())
+    steps::compare_each_edge(
+        N,
+        cycles,
+        |c| et_step(&mut uut, c),
+        |c| model.step(et_inputs(c)),
+    )
 }
 
-proptest! {
-    #![proptest_config(common::proptest_config(300))]
-
-    #[test]
-    fn rust_hdl_equals_model_n8(seed in any::<u64>(), len in 200usize..2000) {
-        compare_et::<8>(&stimulus(seed, 8, len))?;
-    }
-}
-
-proptest! {
-    #![proptest_config(common::proptest_config(40))]
-
-    /// N = 24 (the width quoted in the docs) and N = 2 (the narrowest).
-    #[test]
-    fn rust_hdl_equals_model_n24_and_n2(seed in any::<u64>(), len in 200usize..2000) {
-        compare_et::<24>(&stimulus(seed, 24, len))?;
-        compare_et::<2>(&stimulus(seed, 2, len))?;
-    }
-}
+steps::counter_proptests!(compare_et);
 
 fn et_icarus<const N: usize>(seed: u64) {
     let mut model = EtModel::new(N as u32);

@@ -9,7 +9,7 @@
 
 use crate::common::{
     self,
-    steps::{long_stimulus, stimulus, Cycle},
+    steps::{self, long_stimulus, Cycle},
 };
 use golden::baselines::pc_counter::{PcCounter as PcModel, PcInputs, PcOutputs};
 use hdl::{pc_counter_verilog, PcCounter};
@@ -45,32 +45,15 @@ fn compare_pc<const N: usize>(cycles: &[Cycle]) -> Result<(), TestCaseError> {
     let mut uut = PcCounter::<N>::default();
     uut.connect_all();
     let mut model = PcModel::new(N as u32);
-    for (k, c) in cycles.iter().enumerate() {
-        let want = model.step(pc_inputs(c));
-        prop_assert_eq!(pc_step(&mut uut, c), want, "N = {}, edge {}, {:?}", N, k, c);
-    }
-    Ok(())
+    steps::compare_each_edge(
+        N,
+        cycles,
+        |c| pc_step(&mut uut, c),
+        |c| model.step(pc_inputs(c)),
+    )
 }
 
-proptest! {
-    #![proptest_config(common::proptest_config(300))]
-
-    #[test]
-    fn rust_hdl_equals_model_n8(seed in any::<u64>(), len in 200usize..2000) {
-        compare_pc::<8>(&stimulus(seed, 8, len))?;
-    }
-}
-
-proptest! {
-    #![proptest_config(common::proptest_config(40))]
-
-    /// N = 24 (the width quoted in the docs) and N = 2 (the narrowest).
-    #[test]
-    fn rust_hdl_equals_model_n24_and_n2(seed in any::<u64>(), len in 200usize..2000) {
-        compare_pc::<24>(&stimulus(seed, 24, len))?;
-        compare_pc::<2>(&stimulus(seed, 2, len))?;
-    }
-}
+steps::counter_proptests!(compare_pc);
 
 fn pc_icarus<const N: usize>(seed: u64) {
     let mut model = PcModel::new(N as u32);

@@ -14,7 +14,7 @@ use crate::common;
 use common::SplitMix;
 use golden::bus::ecc_regmap::{self as m, LAYOUT};
 use golden::bus::ecc_regs::{EccRegsInputs, EccRegsModel, EccRegsOutputs, EccStatus};
-use golden::bus::wb_regs::WbBus;
+use golden::bus::reg_file::WbBus;
 use hdl::EccRegs;
 use rust_hdl::prelude::*;
 

@@ -17,8 +17,9 @@
 use crate::common;
 
 use common::SplitMix;
+use golden::bus::reg_file::WbBus;
 use golden::bus::regmap::{self, MapParams, RegMap, LAYOUT, SPAN_BYTES, SPEEDS};
-use golden::bus::wb_regs::{CoreStatus, WbBus, WbRegsInputs, WbRegsModel, WbRegsOutputs};
+use golden::bus::wb_regs::{CoreStatus, WbRegsInputs, WbRegsModel, WbRegsOutputs};
 use golden::params::{Params, Spec};
 use hdl::{wb_regs_verilog, WbRegs};
 use proptest::prelude::*;

@@ -73,3 +73,49 @@ pub fn long_stimulus(seed: u64, bits: u32, cases: u64) -> Vec<Cycle> {
     }
     out
 }
+
+/// Drives a block (`hw`: one edge of the rust-hdl simulation) and its bit-true model
+/// (`model`) with `cycles`, comparing their outputs after every edge; the first difference
+/// fails with the counter width `bits`, the edge and its inputs.
+pub fn compare_each_edge<O: PartialEq + std::fmt::Debug>(
+    bits: usize,
+    cycles: &[Cycle],
+    mut hw: impl FnMut(&Cycle) -> O,
+    mut model: impl FnMut(&Cycle) -> O,
+) -> Result<(), proptest::test_runner::TestCaseError> {
+    for (k, c) in cycles.iter().enumerate() {
+        let want = model(c);
+        proptest::prop_assert_eq!(hw(c), want, "N = {}, edge {}, {:?}", bits, k, c);
+    }
+    Ok(())
+}
+
+/// The rust-hdl runs of each baseline counter's bench, `$compare::<N>(&stimulus(..))` for
+/// the bench's comparison function: 300 proptest cases at N = 8 (where the stimulus
+/// saturates the counters), and 40 at N = 24 (the width the docs quote) and N = 2 (the
+/// narrowest).
+#[allow(unused_macros)]
+macro_rules! counter_proptests {
+    ($compare:ident) => {
+        ::proptest::proptest! {
+            #![proptest_config($crate::common::proptest_config(300))]
+
+            #[test]
+            fn rust_hdl_equals_model_n8(seed in ::proptest::prelude::any::<u64>(), len in 200usize..2000) {
+                $compare::<8>(&$crate::common::steps::stimulus(seed, 8, len))?;
+            }
+        }
+
+        ::proptest::proptest! {
+            #![proptest_config($crate::common::proptest_config(40))]
+
+            #[test]
+            fn rust_hdl_equals_model_n24_and_n2(seed in ::proptest::prelude::any::<u64>(), len in 200usize..2000) {
+                $compare::<24>(&$crate::common::steps::stimulus(seed, 24, len))?;
+                $compare::<2>(&$crate::common::steps::stimulus(seed, 2, len))?;
+            }
+        }
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use counter_proptests;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! The one place that finds and runs the external tools of encspeed's tests and benches:
-//! Icarus Verilog (`iverilog`, `vvp`), Verilator, yosys and nextpnr.
+//! Icarus Verilog (`iverilog`, `vvp`), Verilator, yosys, nextpnr and FuseSoC.
 //!
 //! - **Finding them.** Each tool is run by its plain name from `PATH` ([`run`]). A missing
 //!   tool is an error that names `.ci/run` (which installs all of them), never a skip.
@@ -17,8 +17,9 @@
 //! - **Lint waivers.** No Verilator rule is switched off on the command line but one:
 //!   [`lint_verilog`], for single rust-hdl blocks, passes `-Wno-DECLFILENAME` (rust-hdl
 //!   names every sub-module by its path, which never matches the file name). Every other
-//!   waiver is a line of a `.vlt` file in `tb/verilator/` (or added to one in `tb`, with its
-//!   reason, as `tb::ecc_verilator::waivers_for` does), scoped to one file (and to one message
+//!   waiver is a line of a shipped `.vlt` file (`hdl/src/emit/lint/`, emitted as
+//!   `generated/<top>.vlt`), or added to one in `tb` with its reason, as
+//!   `tb::ecc_verilator::waivers_for` does, scoped to one file (and to one message
 //!   where it can be) and explained next to it; the caller stages that file and lists it
 //!   before the Verilog for [`verilator_lint`] and [`verilator_build`].
 
@@ -221,6 +222,28 @@ pub fn verilator_build(prefix: &str, top: &str, files: &[(&str, &str)]) -> Resul
         let _ = std::fs::remove_dir_all(&tmp);
     }
     Ok(exe)
+}
+
+/// `fusesoc --cores-root <cores_root> run --build-root <build_root> --target=<target> <core>`:
+/// its output, or an error if FuseSoC (or the tool it ran) failed. FuseSoC comes from PyPI
+/// (`.ci/run` installs it into `target/fusesoc-venv` and puts that on `PATH`).
+pub fn fusesoc_run(
+    cores_root: &Path,
+    build_root: &Path,
+    target: &str,
+    core: &str,
+) -> Result<String, String> {
+    run(
+        Command::new("fusesoc")
+            .arg("--cores-root")
+            .arg(cores_root)
+            .arg("run")
+            .arg("--build-root")
+            .arg(build_root)
+            .arg(format!("--target={target}"))
+            .arg(core),
+        &format!("fusesoc (target {target})"),
+    )
 }
 
 /// yosys `read_verilog <file>; synth_ice40 -top <top>; check -assert; stat` in `dir`: the
