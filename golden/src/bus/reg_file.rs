@@ -275,8 +275,13 @@ impl RegFileModel {
             }
         }
         let mut cleared = 0;
-        let index = self.regs.iter().position(|r| r.offset == off);
-        if let (true, Some(i)) = (wr, index) {
+        // The register written, looked up only on a write (this runs every cycle).
+        let written = if wr {
+            self.regs.iter().position(|r| r.offset == off)
+        } else {
+            None
+        };
+        if let Some(i) = written {
             let r = &self.regs[i];
             if off == self.irq_enable {
                 s.irq_enable = ((s.irq_enable & !lanes) | ones) & r.mask_of(Access::Rw);
