@@ -323,6 +323,7 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     localparam  n_zero = 24'h0;
     localparam  n_one = 24'h1;
     localparam  min_dt = 24'h2;
+    localparam  above_min_dt = 24'hfffffe;
     localparam  default_dt = 24'h186a0;
     localparam  default_timeout = 24'h3e8;
     localparam  mode_x1 = 2'b0;
@@ -425,6 +426,7 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     reg  [23:0] calc$nep;
     reg  [23:0] calc$ndt;
     reg  calc$negative;
+    reg  [1:0] calc$mode_shift;
     wire  [40:0] calc$speed_n1;
     wire  [40:0] calc$speed_n2;
     wire  [40:0] calc$speed_n3;
@@ -458,15 +460,6 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     reg  [31:0] position_before$d;
     wire  [31:0] position_before$q;
     reg  position_before$clock;
-    reg  [40:0] scale_n1$value;
-    reg  [1:0] scale_n1$shift;
-    wire  [40:0] scale_n1$scaled;
-    reg  [40:0] scale_n2$value;
-    reg  [1:0] scale_n2$shift;
-    wire  [40:0] scale_n2$scaled;
-    reg  [40:0] scale_n3$value;
-    reg  [1:0] scale_n3$shift;
-    wire  [40:0] scale_n3$scaled;
     reg  hold$clock;
     reg  hold$clear;
     reg  hold$load;
@@ -680,6 +673,7 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         .nep(calc$nep),
         .ndt(calc$ndt),
         .negative(calc$negative),
+        .mode_shift(calc$mode_shift),
         .speed_n1(calc$speed_n1),
         .speed_n2(calc$speed_n2),
         .speed_n3(calc$speed_n3),
@@ -727,21 +721,6 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         .d(position_before$d),
         .q(position_before$q),
         .clock(position_before$clock)
-    );
-    encspeed_wb$core$scale_n1 scale_n1(
-        .value(scale_n1$value),
-        .shift(scale_n1$shift),
-        .scaled(scale_n1$scaled)
-    );
-    encspeed_wb$core$scale_n2 scale_n2(
-        .value(scale_n2$value),
-        .shift(scale_n2$shift),
-        .scaled(scale_n2$scaled)
-    );
-    encspeed_wb$core$scale_n3 scale_n3(
-        .value(scale_n3$value),
-        .shift(scale_n3$shift),
-        .scaled(scale_n3$scaled)
     );
     encspeed_wb$core$hold hold(
         .clock(hold$clock),
@@ -910,7 +889,7 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         if (cfg_dt == n_zero) begin
             dt_eff = default_dt;
         end
-        else if (cfg_dt < min_dt) begin
+        else if ((cfg_dt & above_min_dt) == n_zero) begin
             dt_eff = min_dt;
         end
         dt_reg$d = dt_eff;
@@ -982,12 +961,7 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         calc$nep = table1$nep;
         calc$ndt = table1$ndt;
         calc$negative = ~last_dir$q;
-        scale_n1$value = calc$speed_n1;
-        scale_n2$value = calc$speed_n2;
-        scale_n3$value = calc$speed_n3;
-        scale_n1$shift = shift;
-        scale_n2$shift = shift;
-        scale_n3$shift = shift;
+        calc$mode_shift = shift;
         tag$reset = engine_reset;
         tag$start = table1$update & table1$primed;
         position_before$d = counter$position;
@@ -1023,9 +997,9 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         end
         hold$clear = engine_reset;
         hold$load = calc$valid;
-        hold$n1_in = scale_n1$scaled;
-        hold$n2_in = scale_n2$scaled;
-        hold$n3_in = scale_n3$scaled;
+        hold$n1_in = calc$speed_n1;
+        hold$n2_in = calc$speed_n2;
+        hold$n3_in = calc$speed_n3;
         pc$reset = rst;
         et$reset = rst;
         mt$reset = rst;
@@ -2658,7 +2632,7 @@ module encspeed_wb$core$baseline$w_t(d,q,clock);
 endmodule // encspeed_wb$core$baseline$w_t
 
 
-module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n2,speed_n3,valid,busy);
+module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1,speed_n2,speed_n3,valid,busy);
     
     // Module arguments
     input wire  clock;
@@ -2667,6 +2641,7 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
     input wire  [23:0] nep;
     input wire  [23:0] ndt;
     input wire  negative;
+    input wire  [1:0] mode_shift;
     output reg  [40:0] speed_n1;
     output reg  [40:0] speed_n2;
     output reg  [40:0] speed_n3;
@@ -2681,8 +2656,16 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
     localparam  p_x_msb = 49'h1000000;
     localparam  s_zero = 41'h0;
     localparam  s_one = 41'h1;
+    localparam  s_two = 41'h2;
+    localparam  s_three = 41'h3;
+    localparam  s_fill_two = 41'h18000000000;
+    localparam  s_msb = 41'h10000000000;
+    localparam  m_zero = 2'b0;
+    localparam  m_one = 2'b1;
+    localparam  m_two = 2'b10;
     localparam  s_max = 41'hffffffffff;
     localparam  sh_one = 8'h1;
+    localparam  sh_two = 8'h2;
     localparam  sh_n = 8'h18;
     localparam  sh_low = 8'h19;
     localparam  count_zero = 6'b0;
@@ -2707,6 +2690,9 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
     reg  req_neg$d;
     wire  req_neg$q;
     reg  req_neg$clock;
+    reg  [1:0] req_shift$d;
+    wire  [1:0] req_shift$q;
+    reg  req_shift$clock;
     reg  pending$d;
     wire  pending$q;
     reg  pending$clock;
@@ -2719,6 +2705,9 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
     reg  w_neg$d;
     wire  w_neg$q;
     reg  w_neg$clock;
+    reg  [1:0] w_shift$d;
+    wire  [1:0] w_shift$q;
+    reg  w_shift$clock;
     reg  w_nep_zero$d;
     wire  w_nep_zero$q;
     reg  w_nep_zero$clock;
@@ -2793,7 +2782,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
     reg  x_bit;
     reg  [40:0] half;
     reg  round_bit;
+    reg  by_two;
+    reg  by_four;
     reg  [40:0] addend;
+    reg  [40:0] increment;
+    reg  [40:0] sum;
     reg  [40:0] rounded;
     
     // Sub module instances
@@ -2811,6 +2804,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
         .d(req_neg$d),
         .q(req_neg$q),
         .clock(req_neg$clock)
+    );
+    encspeed_wb$core$calc$req_shift req_shift(
+        .d(req_shift$d),
+        .q(req_shift$q),
+        .clock(req_shift$clock)
     );
     encspeed_wb$core$calc$pending pending(
         .d(pending$d),
@@ -2831,6 +2829,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
         .d(w_neg$d),
         .q(w_neg$q),
         .clock(w_neg$clock)
+    );
+    encspeed_wb$core$calc$w_shift w_shift(
+        .d(w_shift$d),
+        .q(w_shift$q),
+        .clock(w_shift$clock)
     );
     encspeed_wb$core$calc$w_nep_zero w_nep_zero(
         .d(w_nep_zero$d),
@@ -2940,10 +2943,12 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
         req_nep$clock = clock;
         req_ndt$clock = clock;
         req_neg$clock = clock;
+        req_shift$clock = clock;
         pending$clock = clock;
         w_nep$clock = clock;
         w_ndt$clock = clock;
         w_neg$clock = clock;
+        w_shift$clock = clock;
         w_nep_zero$clock = clock;
         w_ndt_zero$clock = clock;
         state$clock = clock;
@@ -2966,10 +2971,12 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
         req_nep$d = req_nep$q;
         req_ndt$d = req_ndt$q;
         req_neg$d = req_neg$q;
+        req_shift$d = req_shift$q;
         pending$d = pending$q;
         w_nep$d = w_nep$q;
         w_ndt$d = w_ndt$q;
         w_neg$d = w_neg$q;
+        w_shift$d = w_shift$q;
         w_nep_zero$d = w_nep_zero$q;
         w_ndt_zero$d = w_ndt_zero$q;
         state$d = state$q;
@@ -3318,19 +3325,58 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
             half = s_zero;
             round_bit = 1'b0;
         end
+        by_two = w_shift$q == m_one;
+        by_four = (w_shift$q & m_two) != m_zero;
         addend = half;
+        increment = s_zero;
+        if (round_bit) begin
+            increment = s_one;
+        end
+        if (by_two) begin
+            increment = s_one;
+            if (round_bit) begin
+                increment = s_two;
+            end
+        end
+        if (by_four) begin
+            increment = s_two;
+            if (round_bit) begin
+                increment = s_three;
+            end
+        end
         if (w_neg$q) begin
             addend = ~half;
+            increment = s_one;
+            if (round_bit) begin
+                increment = s_zero;
+            end
+            if (by_four) begin
+                increment = s_two;
+                if (round_bit) begin
+                    increment = s_one;
+                end
+            end
         end
-        rounded = addend;
-        if (round_bit ^ w_neg$q) begin
-            rounded = addend + s_one;
+        sum = addend + increment;
+        rounded = sum;
+        if (by_two) begin
+            rounded = sum >> sh_one;
+            if (w_neg$q & ((sum & s_msb) != s_zero)) begin
+                rounded = (sum >> sh_one) | s_msb;
+            end
+        end
+        if (by_four) begin
+            rounded = sum >> sh_two;
+            if (w_neg$q & ((sum & s_msb) != s_zero)) begin
+                rounded = (sum >> sh_two) | s_fill_two;
+            end
         end
         valid_reg$d = 1'b0;
         if ((state$q == st_idle) & pending$q) begin
             w_nep$d = req_nep_wide;
             w_ndt$d = req_ndt_wide;
             w_neg$d = req_neg$q;
+            w_shift$d = req_shift$q;
             w_nep_zero$d = req_nep$q == n_zero;
             w_ndt_zero$d = req_ndt$q == n_zero;
             pending$d = 1'b0;
@@ -3398,6 +3444,7 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,speed_n1,speed_n
             req_nep$d = nep;
             req_ndt$d = ndt;
             req_neg$d = negative;
+            req_shift$d = mode_shift;
             pending$d = 1'b1;
         end
         if (reset) begin
@@ -3786,6 +3833,25 @@ module encspeed_wb$core$calc$req_nep(d,q,clock);
 endmodule // encspeed_wb$core$calc$req_nep
 
 
+module encspeed_wb$core$calc$req_shift(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$req_shift
+
+
 module encspeed_wb$core$calc$stage_n1(d,q,clock);
     
     // Module arguments
@@ -3955,6 +4021,25 @@ module encspeed_wb$core$calc$w_nep_zero(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$calc$w_nep_zero
+
+
+module encspeed_wb$core$calc$w_shift(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$w_shift
 
 
 module encspeed_wb$core$cfg_error_reg(d,q,clock);
@@ -6173,6 +6258,7 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     reg  [23:0] age_inc;
     reg  [23:0] last_inc;
     reg  [23:0] m_now;
+    reg  m_now_nonzero;
     reg  [23:0] span_now;
     reg  [23:0] last_now;
     
@@ -6295,6 +6381,7 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
             span_now = age_inc;
             last_now = zero;
         end
+        m_now_nonzero = (m_count$q != zero) | cont;
         strobe_reg$d = tick & anchored$q;
         m_count$d = m_now;
         span$d = span_now;
@@ -6303,14 +6390,14 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
             if (anchored$q) begin
                 m_reg$d = m_now;
                 t_reg$d = last_now;
-                if (m_now != zero) begin
+                if (m_now_nonzero) begin
                     t_reg$d = span_now;
                 end
                 neg_reg$d = ~dir$q;
             end
             m_count$d = zero;
             span$d = zero;
-            if (m_now != zero) begin
+            if (m_now_nonzero) begin
                 anchored$d = 1'b1;
                 age$d = last_now;
             end
@@ -6593,6 +6680,8 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     
     // Constant declarations
     localparam  zero = 24'h0;
+    localparam  all_ones = 24'hffffff;
+    localparam  msb = 24'h800000;
     localparam  one = 24'h1;
     localparam  max_pos = 24'h7fffff;
     localparam  min_mag = 24'h800000;
@@ -6601,12 +6690,12 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     reg  [23:0] phase$d;
     wire  [23:0] phase$q;
     reg  phase$clock;
-    reg  [23:0] fwd$d;
-    wire  [23:0] fwd$q;
-    reg  fwd$clock;
-    reg  [23:0] bwd$d;
-    wire  [23:0] bwd$q;
-    reg  bwd$clock;
+    reg  [23:0] net_lo$d;
+    wire  [23:0] net_lo$q;
+    reg  net_lo$clock;
+    reg  net_hi$d;
+    wire  net_hi$q;
+    reg  net_hi$clock;
     reg  [23:0] count_reg$d;
     wire  [23:0] count_reg$q;
     reg  count_reg$clock;
@@ -6620,7 +6709,10 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     // Local signals
     reg  [23:0] dt_limit;
     reg  tick;
-    reg  [23:0] diff;
+    reg  up;
+    reg  down;
+    reg  [23:0] delta;
+    reg  fits;
     
     // Sub module instances
     encspeed_wb$core$pc$phase phase(
@@ -6628,15 +6720,15 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
         .q(phase$q),
         .clock(phase$clock)
     );
-    encspeed_wb$core$pc$fwd fwd(
-        .d(fwd$d),
-        .q(fwd$q),
-        .clock(fwd$clock)
+    encspeed_wb$core$pc$net_lo net_lo(
+        .d(net_lo$d),
+        .q(net_lo$q),
+        .clock(net_lo$clock)
     );
-    encspeed_wb$core$pc$bwd bwd(
-        .d(bwd$d),
-        .q(bwd$q),
-        .clock(bwd$clock)
+    encspeed_wb$core$pc$net_hi net_hi(
+        .d(net_hi$d),
+        .q(net_hi$q),
+        .clock(net_hi$clock)
     );
     encspeed_wb$core$pc$count_reg count_reg(
         .d(count_reg$d),
@@ -6657,14 +6749,14 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     // Update code
     always @(*) begin
         phase$clock = clock;
-        fwd$clock = clock;
-        bwd$clock = clock;
+        net_lo$clock = clock;
+        net_hi$clock = clock;
         count_reg$clock = clock;
         sat_reg$clock = clock;
         strobe_reg$clock = clock;
         phase$d = phase$q;
-        fwd$d = fwd$q;
-        bwd$d = bwd$q;
+        net_lo$d = net_lo$q;
+        net_hi$d = net_hi$q;
         count_reg$d = count_reg$q;
         sat_reg$d = sat_reg$q;
         strobe_reg$d = strobe_reg$q;
@@ -6674,49 +6766,44 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
         end
         tick = phase$q >= dt_limit;
         phase$d = phase$q + one;
-        diff = bwd$q - fwd$q;
-        if (fwd$q >= bwd$q) begin
-            diff = fwd$q - bwd$q;
+        up = step & forward;
+        down = step & ~forward;
+        delta = one;
+        if (down) begin
+            delta = all_ones;
         end
+        fits = ~(net_hi$q ^ ((net_lo$q & msb) != zero));
         strobe_reg$d = tick;
         if (tick) begin
             phase$d = zero;
-            fwd$d = zero;
-            bwd$d = zero;
-            if (step & forward) begin
-                fwd$d = one;
-            end
-            if (step & ~forward) begin
-                bwd$d = one;
-            end
-            sat_reg$d = 1'b0;
-            if (fwd$q >= bwd$q) begin
-                count_reg$d = diff;
-                if (diff > max_pos) begin
-                    count_reg$d = max_pos;
-                    sat_reg$d = 1'b1;
-                end
-            end
-            else begin
-                count_reg$d = zero - diff;
-                if (diff > min_mag) begin
+            count_reg$d = net_lo$q;
+            sat_reg$d = ~fits;
+            if (~fits) begin
+                count_reg$d = max_pos;
+                if (net_hi$q) begin
                     count_reg$d = min_mag;
-                    sat_reg$d = 1'b1;
                 end
+            end
+            net_lo$d = zero;
+            net_hi$d = 1'b0;
+            if (up) begin
+                net_lo$d = one;
+            end
+            if (down) begin
+                net_lo$d = all_ones;
+                net_hi$d = 1'b1;
             end
         end
-        else begin
-            if (step & forward) begin
-                fwd$d = fwd$q + one;
-            end
-            if (step & ~forward) begin
-                bwd$d = bwd$q + one;
+        else if (step) begin
+            net_lo$d = net_lo$q + delta;
+            if ((up & (net_lo$q == all_ones)) | (down & (net_lo$q == zero))) begin
+                net_hi$d = ~net_hi$q;
             end
         end
         if (reset) begin
             phase$d = zero;
-            fwd$d = zero;
-            bwd$d = zero;
+            net_lo$d = zero;
+            net_hi$d = 1'b0;
             count_reg$d = zero;
             sat_reg$d = 1'b0;
             strobe_reg$d = 1'b0;
@@ -6727,25 +6814,6 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     end
     
 endmodule // encspeed_wb$core$pc
-
-
-module encspeed_wb$core$pc$bwd(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$pc$bwd
 
 
 module encspeed_wb$core$pc$count_reg(d,q,clock);
@@ -6767,7 +6835,26 @@ module encspeed_wb$core$pc$count_reg(d,q,clock);
 endmodule // encspeed_wb$core$pc$count_reg
 
 
-module encspeed_wb$core$pc$fwd(d,q,clock);
+module encspeed_wb$core$pc$net_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$pc$net_hi
+
+
+module encspeed_wb$core$pc$net_lo(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -6783,7 +6870,7 @@ module encspeed_wb$core$pc$fwd(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_wb$core$pc$fwd
+endmodule // encspeed_wb$core$pc$net_lo
 
 
 module encspeed_wb$core$pc$phase(d,q,clock);
@@ -6879,141 +6966,6 @@ module encspeed_wb$core$restart_pos(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$restart_pos
-
-
-module encspeed_wb$core$scale_n1(value,shift,scaled);
-    
-    // Module arguments
-    input wire  [40:0] value;
-    input wire  [1:0] shift;
-    output reg  [40:0] scaled;
-    
-    // Constant declarations
-    localparam  zero = 41'h0;
-    localparam  one = 41'h1;
-    localparam  two = 41'h2;
-    localparam  sign_mask = 41'h10000000000;
-    localparam  sh_zero = 2'b0;
-    localparam  sh_one = 2'b1;
-    localparam  by_one = 8'h1;
-    localparam  by_two = 8'h2;
-    
-    // Local signals
-    reg  negative;
-    reg  [40:0] magnitude;
-    reg  [40:0] rounded;
-    
-    // Update code
-    always @(*) begin
-        negative = (value & sign_mask) != zero;
-        magnitude = value;
-        if (negative) begin
-            magnitude = zero - value;
-        end
-        rounded = magnitude;
-        if (shift == sh_one) begin
-            rounded = (magnitude + one) >> by_one;
-        end
-        else if (shift != sh_zero) begin
-            rounded = (magnitude + two) >> by_two;
-        end
-        scaled = rounded;
-        if (negative) begin
-            scaled = zero - rounded;
-        end
-    end
-    
-endmodule // encspeed_wb$core$scale_n1
-
-
-module encspeed_wb$core$scale_n2(value,shift,scaled);
-    
-    // Module arguments
-    input wire  [40:0] value;
-    input wire  [1:0] shift;
-    output reg  [40:0] scaled;
-    
-    // Constant declarations
-    localparam  zero = 41'h0;
-    localparam  one = 41'h1;
-    localparam  two = 41'h2;
-    localparam  sign_mask = 41'h10000000000;
-    localparam  sh_zero = 2'b0;
-    localparam  sh_one = 2'b1;
-    localparam  by_one = 8'h1;
-    localparam  by_two = 8'h2;
-    
-    // Local signals
-    reg  negative;
-    reg  [40:0] magnitude;
-    reg  [40:0] rounded;
-    
-    // Update code
-    always @(*) begin
-        negative = (value & sign_mask) != zero;
-        magnitude = value;
-        if (negative) begin
-            magnitude = zero - value;
-        end
-        rounded = magnitude;
-        if (shift == sh_one) begin
-            rounded = (magnitude + one) >> by_one;
-        end
-        else if (shift != sh_zero) begin
-            rounded = (magnitude + two) >> by_two;
-        end
-        scaled = rounded;
-        if (negative) begin
-            scaled = zero - rounded;
-        end
-    end
-    
-endmodule // encspeed_wb$core$scale_n2
-
-
-module encspeed_wb$core$scale_n3(value,shift,scaled);
-    
-    // Module arguments
-    input wire  [40:0] value;
-    input wire  [1:0] shift;
-    output reg  [40:0] scaled;
-    
-    // Constant declarations
-    localparam  zero = 41'h0;
-    localparam  one = 41'h1;
-    localparam  two = 41'h2;
-    localparam  sign_mask = 41'h10000000000;
-    localparam  sh_zero = 2'b0;
-    localparam  sh_one = 2'b1;
-    localparam  by_one = 8'h1;
-    localparam  by_two = 8'h2;
-    
-    // Local signals
-    reg  negative;
-    reg  [40:0] magnitude;
-    reg  [40:0] rounded;
-    
-    // Update code
-    always @(*) begin
-        negative = (value & sign_mask) != zero;
-        magnitude = value;
-        if (negative) begin
-            magnitude = zero - value;
-        end
-        rounded = magnitude;
-        if (shift == sh_one) begin
-            rounded = (magnitude + one) >> by_one;
-        end
-        else if (shift != sh_zero) begin
-            rounded = (magnitude + two) >> by_two;
-        end
-        scaled = rounded;
-        if (negative) begin
-            scaled = zero - rounded;
-        end
-    end
-    
-endmodule // encspeed_wb$core$scale_n3
 
 
 module encspeed_wb$core$startup(clock,reset,cfg_filter,front_reset);
@@ -8196,7 +8148,7 @@ module encspeed_wb$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,sta
     // Constant declarations
     localparam  zero = 24'h0;
     localparam  one = 24'h1;
-    localparam  min_dt = 24'h2;
+    localparam  above_min = 24'hfffffe;
     localparam  saturated = 24'hffffff;
     
     // Stub signals
@@ -8242,7 +8194,7 @@ module encspeed_wb$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,sta
         dt_limit$d = dt_limit$q;
         restart_now = lep & (cdt_count$q != zero);
         dt_limit$d = dt - one;
-        if (dt < min_dt) begin
+        if ((dt & above_min) == zero) begin
             dt_limit$d = one;
         end
         tick_now = ~restart_now & (ts_count$q >= dt_limit$q);

@@ -247,6 +247,7 @@ const IDLE: SpeedCalcInputs = SpeedCalcInputs {
     nep: 0,
     ndt: 0,
     negative: false,
+    shift: 0,
 };
 
 fn start(nep: u64, ndt: u64, negative: bool) -> SpeedCalcInputs {
@@ -257,6 +258,37 @@ fn start(nep: u64, ndt: u64, negative: bool) -> SpeedCalcInputs {
         negative,
         ..IDLE
     }
+}
+
+/// The speeds come out in lines per dt: x1 unchanged, x2 and x4 divided by 2 and 4 with a
+/// second rounding of the magnitude (nearest, ties away from zero), then the sign.
+#[test]
+fn speeds_are_mode_scaled_by_the_latched_shift() {
+    let f = fmt(24, 16);
+    let l = latency_cycles(24, 16);
+    let result = |nep, ndt, negative, shift| {
+        let mut m = SpeedCalcModel::new(f);
+        m.step(SpeedCalcInputs {
+            shift,
+            ..start(nep, ndt, negative)
+        });
+        // A different shift after the start does not change the result.
+        for _ in 0..l {
+            m.step(SpeedCalcInputs { shift: 1, ..IDLE });
+        }
+        assert!(m.outputs().valid);
+        m.outputs().speeds
+    };
+    // Nep = 4, Ndt = 1: n1 = 4, n2 = 3, n3 = 24/7 steps per dt. x1: 262144, 196608,
+    // 224694.857 → 224695. x4: 1 line = 65536, 0.75 = 49152, 224695/4 = 56173.75 → 56174.
+    assert_eq!(result(4, 1, false, 0), s(262_144, 196_608, 224_695));
+    assert_eq!(result(4, 1, false, 2), s(65_536, 49_152, 56_174));
+    assert_eq!(result(4, 1, true, 2), s(-65_536, -49_152, -56_174));
+    // shift 3 acts as x4.
+    assert_eq!(result(4, 1, true, 3), s(-65_536, -49_152, -56_174));
+    // x2: 224695/2 = 112347.5 → 112348 (the tie goes away from zero, in both directions).
+    assert_eq!(result(4, 1, false, 1), s(131_072, 98_304, 112_348));
+    assert_eq!(result(4, 1, true, 1), s(-131_072, -98_304, -112_348));
 }
 
 #[test]

@@ -67,7 +67,6 @@ pub use emit::prefix::Prefix;
 pub use emit::tops::Top;
 pub use emit::wb::emit_wb;
 pub use emit::{emit_core, emit_ecc, EmitInfo};
-pub use estimator::mode_scale::ModeScale;
 pub use estimator::speed_calc::{speed_calc_verilog, SpeedCalc};
 pub use estimator::speed_hold::SpeedHold;
 pub use estimator::speed_tag::SpeedTag;

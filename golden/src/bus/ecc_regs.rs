@@ -90,10 +90,25 @@ impl EccRegsOutputs {
 #[derive(Clone, Debug)]
 pub struct EccRegsModel {
     file: RegFileModel,
+    masks: FieldMasks,
     speed_bits: u32,
     ecc_c: u32,
     ecc_d: u32,
     prev_done: bool,
+}
+
+/// The masks of the fields the window drives or reads each cycle, looked up in the map once.
+#[derive(Clone, Copy, Debug)]
+struct FieldMasks {
+    /// `ECC_IRQ_STATUS` events.
+    mtc: u32,
+    n3c: u32,
+    ident: u32,
+    /// `ECC_CTRL.LOAD`.
+    load: u32,
+    /// `ECC_STATUS` flags.
+    done: u32,
+    overflow: u32,
 }
 
 /// The file's one pulse: `ident_arm`.
@@ -108,17 +123,24 @@ impl EccRegsModel {
         let shadows: Vec<(u32, u32)> = ECC_SPEEDS.iter().map(|&(lo, hi, _)| (lo, hi)).collect();
         let ctrl = regs.iter().find(|r| r.offset == m::ECC_CTRL).unwrap();
         let arm = (m::ECC_CTRL, ctrl.field("IDENT_ARM").mask());
+        let file = RegFileModel::new(regs, "ECC_IRQ_ENABLE", "ECC_IRQ_STATUS", &shadows, &[arm]);
+        let mask = |off: u32, name: &str| file.at(off).field(name).mask();
+        let masks = FieldMasks {
+            mtc: mask(m::ECC_IRQ_STATUS, "MTC"),
+            n3c: mask(m::ECC_IRQ_STATUS, "N3C"),
+            ident: mask(m::ECC_IRQ_STATUS, "IDENT"),
+            load: mask(m::ECC_CTRL, "LOAD"),
+            done: mask(m::ECC_STATUS, "IDENT_DONE"),
+            overflow: mask(m::ECC_STATUS, "IDENT_OVERFLOW"),
+        };
         Self {
-            file: RegFileModel::new(regs, "ECC_IRQ_ENABLE", "ECC_IRQ_STATUS", &shadows, &[arm]),
+            file,
+            masks,
             speed_bits,
             ecc_c: 0,
             ecc_d: 0,
             prev_done: false,
         }
-    }
-
-    fn field(&self, off: u32, name: &str) -> u32 {
-        self.file.at(off).field(name).mask()
     }
 
     /// The outputs as they stand.
@@ -162,17 +184,11 @@ impl EccRegsModel {
         let st = &inp.status;
         self.check(st);
         let wide = st.speeds().map(|v| sign_extend(v, self.speed_bits));
-        let ev = |b: bool, name: &str| {
-            if b {
-                self.field(m::ECC_IRQ_STATUS, name)
-            } else {
-                0
-            }
-        };
-        let events = ev(st.mtc_strobe, "MTC")
-            | ev(st.n3c_strobe, "N3C")
-            | ev(st.ident.done && !self.prev_done, "IDENT");
-        let load = self.field(m::ECC_CTRL, "LOAD");
+        let k = self.masks;
+        let ev = |b: bool, mask: u32| if b { mask } else { 0 };
+        let events = ev(st.mtc_strobe, k.mtc)
+            | ev(st.n3c_strobe, k.n3c)
+            | ev(st.ident.done && !self.prev_done, k.ident);
         // The staged coefficients as they stand before the edge.
         let staged = (self.file.rw(m::ECC_C), self.file.rw(m::ECC_D));
         let cycle = Cycle {
@@ -181,15 +197,12 @@ impl EccRegsModel {
             wide: &wide,
             events,
         };
-        let flags = (
-            self.field(m::ECC_STATUS, "IDENT_DONE"),
-            self.field(m::ECC_STATUS, "IDENT_OVERFLOW"),
-        );
+        let flags = (k.done, k.overflow);
         let req = self.file.step(&cycle, &|off| live(off, st, flags));
         if inp.reset {
             (self.ecc_c, self.ecc_d, self.prev_done) = (0, 0, false);
         } else {
-            if req.writes_one(m::ECC_CTRL, load) {
+            if req.writes_one(m::ECC_CTRL, k.load) {
                 (self.ecc_c, self.ecc_d) = staged;
             }
             self.prev_done = st.ident.done;

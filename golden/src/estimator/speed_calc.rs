@@ -31,6 +31,16 @@
 //! The error of each output against the exact value is at most ½ LSB = 2^−(F+1) ω_lim
 //! ([`speed_lsb_error`]); relative to a speed n it is at most 2^−(F+1)/n.
 //!
+//! # Mode scaling
+//!
+//! The values above are in decoder steps per dt. The calculator outputs them in lines per
+//! dt, the unit of every speed port: each signed value v is [`mode_scale`]d by the `shift`
+//! latched with its request (0 in x1, 1 in x2, 2 in x4), i.e. its magnitude divided by
+//! 2^shift, rounded to nearest with ties away from zero, and the sign put back. The
+//! hardware does this second rounding in the same adder as the first (`hdl::SpeedCalc`'s
+//! docs give the identity); the model applies the two roundings one after the other, as
+//! written here, so a match checks that identity on every result. In x1 nothing changes.
+//!
 //! # Special inputs
 //!
 //! * Nep = 0 (no pulse seen): all three are 0.
@@ -41,11 +51,11 @@
 //!
 //! # Timing (shared with the HDL block)
 //!
-//! * `start` is sampled at a rising edge (reset low). It latches `nep`, `ndt` and `negative`
-//!   into a one-deep request register and marks the request pending. A start while a
-//!   computation runs is latched the same way (a newer start replaces an older request that
-//!   has not begun): the calculator always ends up computing the values of the **last**
-//!   start.
+//! * `start` is sampled at a rising edge (reset low). It latches `nep`, `ndt`, `negative`
+//!   and `shift` into a one-deep request register and marks the request pending. A start
+//!   while a computation runs is latched the same way (a newer start replaces an older
+//!   request that has not begun): the calculator always ends up computing the values of
+//!   the **last** start.
 //! * At the first edge at which the calculator is idle and a request is pending, it takes the
 //!   request and begins. [`latency_cycles`]`(N, F)` = 3·(N + F + 1) + 5 edges after the start
 //!   edge (for a start while idle), the three outputs change together and `valid` is high for
@@ -309,6 +319,31 @@ pub fn speeds(format: SpeedFormat, nep: u64, ndt: u64, negative: bool) -> Speeds
     }
 }
 
+/// A speed in steps per dt (2^−F units) as a speed in lines per dt: the magnitude divided
+/// by 2^s, rounded to nearest with ties away from zero, then the sign.
+pub fn mode_scale(v: i64, shift: u32) -> i64 {
+    if shift == 0 {
+        return v;
+    }
+    let m = (v.unsigned_abs() + (1u64 << (shift - 1))) >> shift;
+    if v < 0 {
+        -(m as i64)
+    } else {
+        m as i64
+    }
+}
+
+/// Largest error of a scaled Rairán speed against its exact value, in LSB (2^−F ω_lim):
+/// the calculator's ½ LSB of steps per dt is ½/2^s LSB after the scaling, and the scaling
+/// rounds once more (½ LSB) when s > 0.
+pub fn mode_scale_error_lsb(shift: u32) -> f64 {
+    if shift == 0 {
+        0.5
+    } else {
+        0.5 + 0.5 / f64::from(1u32 << shift)
+    }
+}
+
 /// The hardware's division algorithm on integers: ⌊num·2^frac_bits/den⌋ by restoring long
 /// division that starts from the partial remainder `num >> int_bits`, brings down the low
 /// `int_bits` bits of `num` and then `frac_bits` zero bits, one quotient bit per step
@@ -351,6 +386,9 @@ pub struct SpeedCalcInputs {
     pub ndt: u64,
     /// Direction, 1 = reverse; latched at a start.
     pub negative: bool,
+    /// log2 of the decoder steps per line (0 = x1, 1 = x2, 2 = x4; 3 acts as 2); latched
+    /// at a start. The speeds are [`mode_scale`]d by it.
+    pub shift: u32,
 }
 
 /// Outputs of the calculator after a rising clock edge (all from registers).
@@ -370,7 +408,7 @@ pub struct SpeedCalcOutputs {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SpeedCalcModel {
     format: SpeedFormat,
-    timing: LatestRequest<(u64, u64, bool), Speeds>,
+    timing: LatestRequest<(u64, u64, bool, u32), Speeds>,
     out: SpeedCalcOutputs,
 }
 
@@ -408,12 +446,21 @@ impl SpeedCalcModel {
             ..self.out
         };
         let format = self.format;
-        let start = inp.start.then_some((inp.nep, inp.ndt, inp.negative));
+        let start = inp
+            .start
+            .then_some((inp.nep, inp.ndt, inp.negative, inp.shift.min(2)));
         if let Some(result) = self.timing.edge(
             start,
             inp.reset,
             format.latency_cycles(),
-            |(nep, ndt, negative)| speeds(format, nep, ndt, negative),
+            |(nep, ndt, negative, shift)| {
+                let s = speeds(format, nep, ndt, negative);
+                Speeds {
+                    n1: mode_scale(s.n1, shift),
+                    n2: mode_scale(s.n2, shift),
+                    n3: mode_scale(s.n3, shift),
+                }
+            },
         ) {
             out.speeds = result;
             out.valid = true;

@@ -7,7 +7,7 @@
 //! enc_b ─ sync ─ GlitchFilter ─┴─ QuadratureDecoder ─ step, forward ─┬─ PositionCounter ─ position, z_latch, index
 //! enc_z ─ sync ─ GlitchFilter ──────────────────────────────────────┘│
 //!                                     ┌────────────────────────────────┤
-//!                                     ├─ Table1 (Rairán) ─ nep, ndt ─ SpeedCalc ─ ModeScale ─ speed_n1..n3
+//!                                     ├─ Table1 (Rairán) ─ nep, ndt ─ SpeedCalc ─ speed_n1..n3
 //!                                     └─ PcCounter, EtTimer, MtCounter ─ BaselineSpeeds ─ speed_pc, speed_et, speed_mt
 //! ```
 //!
@@ -34,10 +34,11 @@
 //!   So no speed ever mixes the two directions, and none is computed from an Ndt1 or Nep1
 //!   that was not measured from a step.
 //! - **Mode scaling.** Table 1 counts decoder steps, 2^s per line (s = 0, 1, 2 in x1, x2,
-//!   x4). The speed calculator gives n in steps per dt with F fractional bits; the speed
-//!   registers hold n / 2^s in units of ω_lim (one line per dt): the magnitude rounded to
-//!   nearest, ties away from zero, then the sign. Error: ½ LSB in x1, ½ + ½/2^s LSB in x2
-//!   and x4 ([`mode_scale_error_lsb`]).
+//!   x4). The speed calculator computes n in steps per dt with F fractional bits and
+//!   outputs n / 2^s in units of ω_lim (one line per dt), the shift latched with each
+//!   request: the magnitude rounded to nearest, ties away from zero, then the sign. Error:
+//!   ½ LSB in x1, ½ + ½/2^s LSB in x2 and x4 ([`mode_scale_error_lsb`]). A change of mode
+//!   resets the calculator, so every result uses the mode the core is in.
 //! - **Configuration.** `cfg_dt` = 0 means the generation default dt, 1 is used as 2 and
 //!   flags `cfg_error`; `cfg_timeout` = 0 means the generation default timeout; `cfg_mode` 3
 //!   decodes as x4 and flags `cfg_error`. `cfg_dt` and `cfg_timeout` are registered (a change
@@ -64,6 +65,7 @@ use crate::baselines::et_timer::{EtInputs, EtTimer};
 use crate::baselines::mt_counter::{MtCounter, MtInputs};
 use crate::baselines::pc_counter::{PcCounter, PcInputs};
 use crate::estimator::speed_calc::{self, SpeedCalcInputs, SpeedCalcModel, SpeedFormat, Speeds};
+pub use crate::estimator::speed_calc::{mode_scale, mode_scale_error_lsb};
 use crate::estimator::sync_estimator::Table1;
 use crate::frontend::{
     CounterInputs, DecoderInputs, GlitchFilter, GlitchFilterInputs, PositionCounter,
@@ -198,31 +200,6 @@ pub fn mode_shift(cfg_mode: u8) -> u32 {
         MODE_X1 => 0,
         MODE_X2 => 1,
         _ => 2,
-    }
-}
-
-/// A speed in steps per dt (2^−F units) as a speed in lines per dt: the magnitude divided
-/// by 2^s, rounded to nearest with ties away from zero, then the sign.
-pub fn mode_scale(v: i64, shift: u32) -> i64 {
-    if shift == 0 {
-        return v;
-    }
-    let m = (v.unsigned_abs() + (1u64 << (shift - 1))) >> shift;
-    if v < 0 {
-        -(m as i64)
-    } else {
-        m as i64
-    }
-}
-
-/// Largest error of a scaled Rairán speed against its exact value, in LSB (2^−F ω_lim):
-/// the calculator's ½ LSB of steps per dt is ½/2^s LSB after the scaling, and the scaling
-/// rounds once more (½ LSB) when s > 0.
-pub fn mode_scale_error_lsb(shift: u32) -> f64 {
-    if shift == 0 {
-        0.5
-    } else {
-        0.5 + 0.5 / f64::from(1u32 << shift)
     }
 }
 
@@ -410,6 +387,7 @@ impl CoreModel {
             nep: t1.nep,
             ndt: t1.ndt,
             negative: !self.last_dir,
+            shift,
         });
         let tag_before = self.tag_out;
         // Span ends (`speed_position`): the restart pulse is in `position` the edge after
@@ -455,11 +433,7 @@ impl CoreModel {
         } else {
             self.speed_strobe = calc.valid;
             if calc.valid {
-                self.speeds = Speeds {
-                    n1: mode_scale(calc.speeds.n1, shift),
-                    n2: mode_scale(calc.speeds.n2, shift),
-                    n3: mode_scale(calc.speeds.n3, shift),
-                };
+                self.speeds = calc.speeds;
                 self.speed_tag = tag_before;
                 self.speed_ok = true;
             }

@@ -67,6 +67,9 @@ pub struct MtCounter<const N: usize> {
     age_inc: Signal<Local, Bits<N>>,
     last_inc: Signal<Local, Bits<N>>,
     m_now: Signal<Local, Bits<N>>,
+    /// m' ≠ 0, from m ≠ 0 or a counted step (not from m' itself: that would put the
+    /// increment's carry chain in front of the window-end decisions).
+    m_now_nonzero: Signal<Local, Bit>,
     span_now: Signal<Local, Bits<N>>,
     last_now: Signal<Local, Bits<N>>,
     zero: Constant<Bits<N>>,
@@ -108,6 +111,7 @@ impl<const N: usize> Default for MtCounter<N> {
             age_inc: Default::default(),
             last_inc: Default::default(),
             m_now: Default::default(),
+            m_now_nonzero: Default::default(),
             span_now: Default::default(),
             last_now: Default::default(),
             zero: Constant::new(0.into()),
@@ -159,6 +163,7 @@ impl<const N: usize> Logic for MtCounter<N> {
             self.span_now.next = self.age_inc.val();
             self.last_now.next = self.zero.val();
         }
+        self.m_now_nonzero.next = (self.m_count.q.val() != self.zero.val()) | self.cont.val();
         // Window end, or not.
         self.strobe_reg.d.next = self.tick.val() & self.anchored.q.val();
         self.m_count.d.next = self.m_now.val();
@@ -168,14 +173,14 @@ impl<const N: usize> Logic for MtCounter<N> {
             if self.anchored.q.val() {
                 self.m_reg.d.next = self.m_now.val();
                 self.t_reg.d.next = self.last_now.val();
-                if self.m_now.val() != self.zero.val() {
+                if self.m_now_nonzero.val() {
                     self.t_reg.d.next = self.span_now.val();
                 }
                 self.neg_reg.d.next = !self.dir.q.val();
             }
             self.m_count.d.next = self.zero.val();
             self.span.d.next = self.zero.val();
-            if self.m_now.val() != self.zero.val() {
+            if self.m_now_nonzero.val() {
                 self.anchored.d.next = true;
                 self.age.d.next = self.last_now.val();
             }

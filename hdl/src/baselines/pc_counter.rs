@@ -6,11 +6,16 @@
 //! Per clock edge (N = counter width, 2..=32):
 //! - time base: `tick` = phase ≥ max(`cfg_dt`, 1) − 1; phase ← 0 on a tick, else + 1. Steps
 //!   never restart it (with a constant dt D the ticks are edges D, 2D, … after reset);
-//! - unsigned counters f, b of forward and backward steps of the window [tick, next tick):
-//!   the step of a tick edge starts the next window (`golden::ideal::fixed_time`'s
-//!   convention). A window is at most 2^N − 1 edges, so f and b never overflow;
+//! - the net steps f − b of the window [tick, next tick) (forward minus backward): the step
+//!   of a tick edge starts the next window (`golden::ideal::fixed_time`'s convention). A
+//!   window is at most 2^N − 1 edges, so f − b fits N + 1 bits of two's complement: one
+//!   up/down counter `net_lo` (N bits, one adder of ±1) and its top bit `net_hi`, which
+//!   toggles on the carry (an up step from all ones) or the borrow (a down step from 0);
 //! - on a tick: `count` ← f − b clamped to N-bit two's complement [−2^(N−1), 2^(N−1) − 1]
-//!   (`saturated` tells), `strobe` ← 1 for one cycle.
+//!   (`saturated` tells), `strobe` ← 1 for one cycle. The value fits when `net_hi` equals
+//!   bit N − 1 of `net_lo`, else it is clamped towards its sign: the clamp needs no
+//!   comparator and no negation (before, two counters, a comparison, a subtraction, a
+//!   range check and a negation were chained in the tick cycle).
 //!
 //! Ports: `clock`, `reset` (synchronous, active high), `step`, `forward` (from the
 //! quadrature decoder), `cfg_dt[N-1:0]` (cycles; read combinationally every cycle).
@@ -40,15 +45,24 @@ pub struct PcCounter<const N: usize> {
     /// One cycle per window end (count written).
     pub strobe: Signal<Out, Bit>,
     phase: DFF<Bits<N>>,
-    fwd: DFF<Bits<N>>,
-    bwd: DFF<Bits<N>>,
+    /// f − b, low N bits.
+    net_lo: DFF<Bits<N>>,
+    /// f − b, bit N (the sign of the N + 1-bit value).
+    net_hi: DFF<Bit>,
     count_reg: DFF<Bits<N>>,
     sat_reg: DFF<Bit>,
     strobe_reg: DFF<Bit>,
     dt_limit: Signal<Local, Bits<N>>,
     tick: Signal<Local, Bit>,
-    diff: Signal<Local, Bits<N>>,
+    up: Signal<Local, Bit>,
+    down: Signal<Local, Bit>,
+    /// +1 or −1 (all ones).
+    delta: Signal<Local, Bits<N>>,
+    /// `net_lo` in N-bit two's complement is `net_hi` sign-extended: f − b fits N bits.
+    fits: Signal<Local, Bit>,
     zero: Constant<Bits<N>>,
+    all_ones: Constant<Bits<N>>,
+    msb: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
     max_pos: Constant<Bits<N>>,
     min_mag: Constant<Bits<N>>,
@@ -67,15 +81,20 @@ impl<const N: usize> Default for PcCounter<N> {
             saturated: Default::default(),
             strobe: Default::default(),
             phase: Default::default(),
-            fwd: Default::default(),
-            bwd: Default::default(),
+            net_lo: Default::default(),
+            net_hi: Default::default(),
             count_reg: Default::default(),
             sat_reg: Default::default(),
             strobe_reg: Default::default(),
             dt_limit: Default::default(),
             tick: Default::default(),
-            diff: Default::default(),
+            up: Default::default(),
+            down: Default::default(),
+            delta: Default::default(),
+            fits: Default::default(),
             zero: Constant::new(0.into()),
+            all_ones: Constant::new(((1u64 << N) - 1).into()),
+            msb: Constant::new((1u64 << (N - 1)).into()),
             one: Constant::new(1.into()),
             max_pos: Constant::new(((1u64 << (N - 1)) - 1).into()),
             min_mag: Constant::new((1u64 << (N - 1)).into()),
@@ -86,55 +105,55 @@ impl<const N: usize> Default for PcCounter<N> {
 impl<const N: usize> Logic for PcCounter<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, phase, fwd, bwd, count_reg, sat_reg, strobe_reg);
+        dff_setup!(self, clock, phase, net_lo, net_hi, count_reg, sat_reg, strobe_reg);
         self.dt_limit.next = self.cfg_dt.val() - self.one.val();
         if self.cfg_dt.val() == self.zero.val() {
             self.dt_limit.next = self.zero.val();
         }
         self.tick.next = self.phase.q.val() >= self.dt_limit.val();
         self.phase.d.next = self.phase.q.val() + self.one.val();
-        // |f − b| of the window that may end now.
-        self.diff.next = self.bwd.q.val() - self.fwd.q.val();
-        if self.fwd.q.val() >= self.bwd.q.val() {
-            self.diff.next = self.fwd.q.val() - self.bwd.q.val();
+        self.up.next = self.step.val() & self.forward.val();
+        self.down.next = self.step.val() & !self.forward.val();
+        self.delta.next = self.one.val();
+        if self.down.val() {
+            self.delta.next = self.all_ones.val();
         }
+        self.fits.next =
+            !(self.net_hi.q.val() ^ ((self.net_lo.q.val() & self.msb.val()) != self.zero.val()));
         self.strobe_reg.d.next = self.tick.val();
         if self.tick.val() {
+            // Publish the window that ends now; the step of this edge starts the next one.
             self.phase.d.next = self.zero.val();
-            self.fwd.d.next = self.zero.val();
-            self.bwd.d.next = self.zero.val();
-            if self.step.val() & self.forward.val() {
-                self.fwd.d.next = self.one.val();
-            }
-            if self.step.val() & !self.forward.val() {
-                self.bwd.d.next = self.one.val();
-            }
-            self.sat_reg.d.next = false;
-            if self.fwd.q.val() >= self.bwd.q.val() {
-                self.count_reg.d.next = self.diff.val();
-                if self.diff.val() > self.max_pos.val() {
-                    self.count_reg.d.next = self.max_pos.val();
-                    self.sat_reg.d.next = true;
-                }
-            } else {
-                self.count_reg.d.next = self.zero.val() - self.diff.val();
-                if self.diff.val() > self.min_mag.val() {
+            self.count_reg.d.next = self.net_lo.q.val();
+            self.sat_reg.d.next = !self.fits.val();
+            if !self.fits.val() {
+                self.count_reg.d.next = self.max_pos.val();
+                if self.net_hi.q.val() {
                     self.count_reg.d.next = self.min_mag.val();
-                    self.sat_reg.d.next = true;
                 }
             }
-        } else {
-            if self.step.val() & self.forward.val() {
-                self.fwd.d.next = self.fwd.q.val() + self.one.val();
+            self.net_lo.d.next = self.zero.val();
+            self.net_hi.d.next = false;
+            if self.up.val() {
+                self.net_lo.d.next = self.one.val();
             }
-            if self.step.val() & !self.forward.val() {
-                self.bwd.d.next = self.bwd.q.val() + self.one.val();
+            if self.down.val() {
+                self.net_lo.d.next = self.all_ones.val();
+                self.net_hi.d.next = true;
+            }
+        } else if self.step.val() {
+            self.net_lo.d.next = self.net_lo.q.val() + self.delta.val();
+            // The carry out of all ones, or the borrow from 0, flips bit N.
+            if (self.up.val() & (self.net_lo.q.val() == self.all_ones.val()))
+                | (self.down.val() & (self.net_lo.q.val() == self.zero.val()))
+            {
+                self.net_hi.d.next = !self.net_hi.q.val();
             }
         }
         if self.reset.val() {
             self.phase.d.next = self.zero.val();
-            self.fwd.d.next = self.zero.val();
-            self.bwd.d.next = self.zero.val();
+            self.net_lo.d.next = self.zero.val();
+            self.net_hi.d.next = false;
             self.count_reg.d.next = self.zero.val();
             self.sat_reg.d.next = false;
             self.strobe_reg.d.next = false;

@@ -25,20 +25,24 @@
 //! |---|---|---|---|
 //! | `clock` | in | 1 | clock; everything happens at its rising edge |
 //! | `reset` | in | 1 | synchronous, active high; wins over `start` |
-//! | `start` | in | 1 | request a computation (the core's `update`); latches the three inputs below |
+//! | `start` | in | 1 | request a computation (the core's `update`); latches the four inputs below |
 //! | `nep` | in | N | Nep1 (pulses), unsigned |
 //! | `ndt` | in | N | Ndt1 (dt intervals), unsigned |
 //! | `negative` | in | 1 | direction: 1 = reverse, the speeds come out negative |
+//! | `mode_shift` | in | 2 | log2 of the decoder steps per line (0 = x1, 1 = x2, 2 = x4; 3 acts as 2), latched with `start` |
 //! | `speed_n1` | out | N+F+1 | n1 = Nep/Ndt, eq. (5) |
 //! | `speed_n2` | out | N+F+1 | n2, eq. (6) |
 //! | `speed_n3` | out | N+F+1 | n3, eq. (11): the estimate to use |
 //! | `valid` | out | 1 | one cycle: the three speeds were just written (together) |
 //! | `busy` | out | 1 | a computation runs or a request is pending |
 //!
-//! Speeds are two's complement, Q(N).F in units of ω_lim: the value is `raw · 2^−F`. Each
-//! is the exact value rounded to nearest (ties away from zero) in magnitude, then negated if
-//! `negative`: error ≤ 2^−(F+1) ω_lim ([`golden::estimator::speed_calc::speed_lsb_error`]). Nep = 0 gives
-//! 0; Ndt = 0 (never produced by the core) gives ±(2^(N+F) − 1) for Nep ≥ 1.
+//! Speeds are two's complement, Q(N).F in units of ω_lim (lines per dt): the value is
+//! `raw · 2^−F`. Each is the exact value in steps per dt rounded to nearest (ties away from
+//! zero) in magnitude, error ≤ 2^−(F+1) ω_lim
+//! ([`golden::estimator::speed_calc::speed_lsb_error`]), then divided by 2^`mode_shift` and
+//! rounded again the same way ([`golden::estimator::speed_calc::mode_scale`]), then negated
+//! if `negative`. Nep = 0 gives 0; Ndt = 0 (never produced by the core) gives
+//! ±(2^(N+F) − 1) >> s, rounded, for Nep ≥ 1.
 //!
 //! # Timing
 //!
@@ -74,19 +78,34 @@
 //! casts as masks that Verilator flags), so the N-bit request is widened to P bits by a
 //! shift-in loop (wires after synthesis) and every constant is a `Constant` of its
 //! operand's width. The divider's step is [`DivStep`](crate::arith::div_step::DivStep)
-//! (shifted ≥ den read off the borrow of the one subtraction it needs), and
-//! rounding and sign share one adder: with h = q >> 1 and r = q & 1 the result is
-//! h + r, or −(h + r) = ~h + (1 − r), i.e. (h or ~h) + (r xor `negative`).
+//! (shifted ≥ den read off the borrow of the one subtraction it needs).
+//!
+//! # Rounding, mode scaling and sign in one adder
+//!
+//! With q the last quotient, h = q >> 1 and r = q & 1, the magnitude in steps per dt is
+//! m = h + r. Scaled by 2^s with the second rounding it is (m + ⌊2^(s−1)⌋) >> s
+//! = (h + e) >> s with e = r, 1 + r, 2 + r for s = 0, 1, 2 (adding the even 2^s to the odd
+//! numerator before the first halving commutes with it). Its negation uses
+//! −⌊y/2^s⌋ = ⌊(−y + 2^s − 1)/2^s⌋ and −y = ~h + 1 − e: the result is
+//! (~h + f) >>> s with f = 1 − r, 1 − r, 2 − r (arithmetic shift). So one adder
+//! (h or ~h) + (e or f) and a shift by 0, 1 or 2 give the signed, scaled speed: the scaling
+//! costs no carry chain of its own (before, the core had three S-bit scalers, each a
+//! negate, a rounding add and a negate, on its critical path). The positive sum stays
+//! below 2^S (m ≤ 2^(N+F) − 1, e ≤ 3), so its shift fills zeros; a negative request fills
+//! ones when the sum's top bit is set (a sum of 0 or 1 is a speed that rounds to 0).
 //!
 //! # Resources
 //!
-//! Registers: the request (2N + 2), its working copy (2P + 1, of which the zero top bits
+//! Registers: the request (2N + 4), its working copy (2P + 3, of which the zero top bits
 //! are constant), the divider (3P + S), the multiplier (3P), staging and outputs (5S), a
-//! 6-bit step counter and 8 control bits. For N = 24, F = 16, yosys `synth_ice40` maps
-//! the block to 604 flip-flops, 792 LUT4 and 277 carry cells, and nextpnr places it on an
-//! iCE40 HX8K at about 71 MHz; the critical path is the divider's P-bit trial subtraction
-//! into the partial remainder (the 24-bit `encspeed_core` reaches 76 to 85 MHz there,
-//! depending on placement, see docs/benchmarks.md).
+//! 6-bit step counter and 8 control bits. For N = 24, F = 16, yosys 0.23 `synth_ice40`
+//! maps the block (as it sits in the generated `encspeed_core`) to 608 flip-flops, 867
+//! LUT4 and 278 carry cells: 75 LUT4 more than before the mode scaling moved in, against
+//! about 870 for the three scalers it replaced. The critical path of `encspeed_core` and
+//! `encspeed_wb` on the iCE40 HX8K is the divider's P-bit trial subtraction into the
+//! quotient and partial remainder: 49 carry cells, about 12 ns of an 18 ns path, so no
+//! placement reaches 100 MHz until that subtraction is split over two cycles
+//! (docs/benchmarks.md).
 
 use rust_hdl::prelude::*;
 
@@ -122,6 +141,8 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     pub ndt: Signal<In, Bits<N>>,
     /// Direction: 1 = reverse (negative speeds).
     pub negative: Signal<In, Bit>,
+    /// log2 of the decoder steps per line: 0 = x1, 1 = x2, 2 = x4 (3 acts as 2).
+    pub mode_shift: Signal<In, Bits<2>>,
     /// n1 = Nep/Ndt, Q(N).F two's complement, units of ω_lim.
     pub speed_n1: Signal<Out, Bits<S>>,
     /// n2, eq. (6), Q(N).F two's complement, units of ω_lim.
@@ -136,11 +157,13 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     req_nep: DFF<Bits<N>>,
     req_ndt: DFF<Bits<N>>,
     req_neg: DFF<Bit>,
+    req_shift: DFF<Bits<2>>,
     pending: DFF<Bit>,
     // Working copy of the request, widened to P bits.
     w_nep: DFF<Bits<P>>,
     w_ndt: DFF<Bits<P>>,
     w_neg: DFF<Bit>,
+    w_shift: DFF<Bits<2>>,
     /// Nep = 0: all speeds 0.
     w_nep_zero: DFF<Bit>,
     /// Ndt = 0: all speeds saturate (unless Nep = 0).
@@ -183,7 +206,15 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     half: Signal<Local, Bits<S>>,
     /// Quotient bit 0: the rounding increment.
     round_bit: Signal<Local, Bit>,
+    /// Mode scaling by 2 (s = 1) or by 4 (s = 2).
+    by_two: Signal<Local, Bit>,
+    by_four: Signal<Local, Bit>,
+    /// h or ~h.
     addend: Signal<Local, Bits<S>>,
+    /// e or f (0 to 3).
+    increment: Signal<Local, Bits<S>>,
+    sum: Signal<Local, Bits<S>>,
+    /// The signed, scaled speed.
     rounded: Signal<Local, Bits<S>>,
     // Constants, each of the width it is used at.
     n_zero: Constant<Bits<N>>,
@@ -195,9 +226,19 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     p_x_msb: Constant<Bits<P>>,
     s_zero: Constant<Bits<S>>,
     s_one: Constant<Bits<S>>,
+    s_two: Constant<Bits<S>>,
+    s_three: Constant<Bits<S>>,
+    /// The two sign bits that an arithmetic shift by 2 fills in.
+    s_fill_two: Constant<Bits<S>>,
+    /// 2^(S − 1): the sum's top bit, and the sign bit an arithmetic shift by 1 fills in.
+    s_msb: Constant<Bits<S>>,
+    m_zero: Constant<Bits<2>>,
+    m_one: Constant<Bits<2>>,
+    m_two: Constant<Bits<2>>,
     /// 2^(N+F) − 1: the saturated magnitude.
     s_max: Constant<Bits<S>>,
     sh_one: Constant<Bits<SHIFT_BITS>>,
+    sh_two: Constant<Bits<SHIFT_BITS>>,
     /// N: shift from num to its preloaded remainder num >> N.
     sh_n: Constant<Bits<SHIFT_BITS>>,
     /// P − N = N + 1: shift that puts the low N bits of num at the top.
@@ -239,6 +280,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             nep: Default::default(),
             ndt: Default::default(),
             negative: Default::default(),
+            mode_shift: Default::default(),
             speed_n1: Default::default(),
             speed_n2: Default::default(),
             speed_n3: Default::default(),
@@ -247,10 +289,12 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             req_nep: Default::default(),
             req_ndt: Default::default(),
             req_neg: Default::default(),
+            req_shift: Default::default(),
             pending: Default::default(),
             w_nep: Default::default(),
             w_ndt: Default::default(),
             w_neg: Default::default(),
+            w_shift: Default::default(),
             w_nep_zero: Default::default(),
             w_ndt_zero: Default::default(),
             state: Default::default(),
@@ -281,7 +325,11 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             x_bit: Default::default(),
             half: Default::default(),
             round_bit: Default::default(),
+            by_two: Default::default(),
+            by_four: Default::default(),
             addend: Default::default(),
+            increment: Default::default(),
+            sum: Default::default(),
             rounded: Default::default(),
             n_zero: Constant::new(0.into()),
             p_zero: Constant::new(0.into()),
@@ -291,8 +339,20 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             p_x_msb: Constant::new(Bits::<P>::default().replace_bit(N, true)),
             s_zero: Constant::new(0.into()),
             s_one: Constant::new(1.into()),
+            s_two: Constant::new(2.into()),
+            s_three: Constant::new(3.into()),
+            s_fill_two: Constant::new(
+                Bits::<S>::default()
+                    .replace_bit(S - 1, true)
+                    .replace_bit(S - 2, true),
+            ),
+            s_msb: Constant::new(Bits::<S>::default().replace_bit(S - 1, true)),
+            m_zero: Constant::new(0.into()),
+            m_one: Constant::new(1.into()),
+            m_two: Constant::new(2.into()),
             s_max: Constant::new(((1u64 << (N + F)) - 1).into()),
             sh_one: Constant::new(1.into()),
+            sh_two: Constant::new(2.into()),
             sh_n: Constant::new(c(N).into()),
             sh_low: Constant::new(c(P - N).into()),
             count_zero: Constant::new(0.into()),
@@ -316,9 +376,9 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, req_nep, req_ndt, req_neg, pending, w_nep, w_ndt, w_neg, w_nep_zero,
-            w_ndt_zero, state, phase, count, mul_on, part_rem, num_shift, den, quo, mul_x, acc_num,
-            acc_den, stage_n1, stage_n2, out_n1, out_n2, out_n3, valid_reg
+            self, clock, req_nep, req_ndt, req_neg, req_shift, pending, w_nep, w_ndt, w_neg,
+            w_shift, w_nep_zero, w_ndt_zero, state, phase, count, mul_on, part_rem, num_shift, den,
+            quo, mul_x, acc_num, acc_den, stage_n1, stage_n2, out_n1, out_n2, out_n3, valid_reg
         );
         // Widen the request to P bits: shift its bits in at the top, LSB first, then move
         // them down (a cast would be emitted as a mask of another width).
@@ -371,10 +431,10 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         self.next_rem.next = self.div.next_rem.val();
         self.x_bit.next = (self.mul_x.q.val() & self.p_x_msb.val()) != self.p_zero.val();
 
-        // Round and sign with one adder. With q the last quotient, h = q >> 1 and r = q & 1,
-        // the magnitude is h + r, and its negation ~(h + r) + 1 = ~h + (1 − r): so the
-        // result is (h, or ~h if negative) + (r xor negative). The special cases replace
-        // h and r (Ndt = 0: h = 2^(N+F) − 1, r = 0; Nep = 0: h = 0, r = 0).
+        // Round, mode-scale and sign with one adder (module docs): (h or ~h) + (e or f),
+        // then an arithmetic shift by s. With q the last quotient, h = q >> 1 and r = q & 1;
+        // the special cases replace h and r (Ndt = 0: h = 2^(N+F) − 1, r = 0; Nep = 0:
+        // h = 0, r = 0).
         self.half.next = self.quo.q.val() >> self.sh_one.val();
         self.round_bit.next = (self.quo.q.val() & self.s_one.val()) != self.s_zero.val();
         if self.w_ndt_zero.q.val() {
@@ -385,13 +445,53 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.half.next = self.s_zero.val();
             self.round_bit.next = false;
         }
+        self.by_two.next = self.w_shift.q.val() == self.m_one.val();
+        self.by_four.next = (self.w_shift.q.val() & self.m_two.val()) != self.m_zero.val();
         self.addend.next = self.half.val();
+        // e = r (+1 in x2, +2 in x4).
+        self.increment.next = self.s_zero.val();
+        if self.round_bit.val() {
+            self.increment.next = self.s_one.val();
+        }
+        if self.by_two.val() {
+            self.increment.next = self.s_one.val();
+            if self.round_bit.val() {
+                self.increment.next = self.s_two.val();
+            }
+        }
+        if self.by_four.val() {
+            self.increment.next = self.s_two.val();
+            if self.round_bit.val() {
+                self.increment.next = self.s_three.val();
+            }
+        }
         if self.w_neg.q.val() {
             self.addend.next = !self.half.val();
+            // f = 1 − r (2 − r in x4).
+            self.increment.next = self.s_one.val();
+            if self.round_bit.val() {
+                self.increment.next = self.s_zero.val();
+            }
+            if self.by_four.val() {
+                self.increment.next = self.s_two.val();
+                if self.round_bit.val() {
+                    self.increment.next = self.s_one.val();
+                }
+            }
         }
-        self.rounded.next = self.addend.val();
-        if self.round_bit.val() ^ self.w_neg.q.val() {
-            self.rounded.next = self.addend.val() + self.s_one.val();
+        self.sum.next = self.addend.val() + self.increment.val();
+        self.rounded.next = self.sum.val();
+        if self.by_two.val() {
+            self.rounded.next = self.sum.val() >> self.sh_one.val();
+            if self.w_neg.q.val() & ((self.sum.val() & self.s_msb.val()) != self.s_zero.val()) {
+                self.rounded.next = (self.sum.val() >> self.sh_one.val()) | self.s_msb.val();
+            }
+        }
+        if self.by_four.val() {
+            self.rounded.next = self.sum.val() >> self.sh_two.val();
+            if self.w_neg.q.val() & ((self.sum.val() & self.s_msb.val()) != self.s_zero.val()) {
+                self.rounded.next = (self.sum.val() >> self.sh_two.val()) | self.s_fill_two.val();
+            }
         }
 
         self.valid_reg.d.next = false;
@@ -399,6 +499,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.w_nep.d.next = self.req_nep_wide.val();
             self.w_ndt.d.next = self.req_ndt_wide.val();
             self.w_neg.d.next = self.req_neg.q.val();
+            self.w_shift.d.next = self.req_shift.q.val();
             self.w_nep_zero.d.next = self.req_nep.q.val() == self.n_zero.val();
             self.w_ndt_zero.d.next = self.req_ndt.q.val() == self.n_zero.val();
             self.pending.d.next = false;
@@ -468,6 +569,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.req_nep.d.next = self.nep.val();
             self.req_ndt.d.next = self.ndt.val();
             self.req_neg.d.next = self.negative.val();
+            self.req_shift.d.next = self.mode_shift.val();
             self.pending.d.next = true;
         }
         if self.reset.val() {

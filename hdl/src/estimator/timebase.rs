@@ -20,6 +20,14 @@
 
 use rust_hdl::prelude::*;
 
+/// The mask of the bits at or above `MIN_DT_CYCLES` in N bits: a dt is below the minimum
+/// exactly when it has none of them (the minimum is a power of two).
+pub(crate) fn above_min_dt<const N: usize>() -> Bits<N> {
+    const { assert!(golden::params::MIN_DT_CYCLES.is_power_of_two()) };
+    let below = golden::params::MIN_DT_CYCLES - 1;
+    (((1u64 << N) - 1) & !below).into()
+}
+
 /// ts counter with a runtime dt, and the Cdt counter of dt intervals.
 #[derive(LogicBlock)]
 pub struct Timebase<const N: usize> {
@@ -49,7 +57,8 @@ pub struct Timebase<const N: usize> {
     cdt_after_pulse: Signal<Local, Bits<N>>,
     zero: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
-    min_dt: Constant<Bits<N>>,
+    /// The bits at or above MIN_DT_CYCLES (a power of two): dt < MIN_DT_CYCLES when none is set.
+    above_min: Constant<Bits<N>>,
     saturated: Constant<Bits<N>>,
 }
 
@@ -73,7 +82,7 @@ impl<const N: usize> Default for Timebase<N> {
             cdt_after_pulse: Default::default(),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
-            min_dt: Constant::new(golden::params::MIN_DT_CYCLES.into()),
+            above_min: Constant::new(above_min_dt::<N>()),
             saturated: Constant::new(((1u64 << N) - 1).into()),
         }
     }
@@ -87,7 +96,9 @@ impl<const N: usize> Logic for Timebase<N> {
         self.restart_now.next = self.lep.val() & (self.cdt_count.q.val() != self.zero.val());
         // dt − 1, with dt below 2 used as 2.
         self.dt_limit.d.next = self.dt.val() - self.one.val();
-        if self.dt.val() < self.min_dt.val() {
+        // dt < 2 as "no bit above bit 0": LUTs, not a comparator's carry chain in series
+        // with the subtraction.
+        if (self.dt.val() & self.above_min.val()) == self.zero.val() {
             self.dt_limit.d.next = self.one.val();
         }
         // Line 8/12: never in a restart cycle (the count was just set to zero, dt >= 2).

@@ -7,7 +7,7 @@
 //! enc_a ─ TwoFlopSync ─ GlitchFilter ─┐                      ┌─ PositionCounter ─ position, z_latch, index
 //! enc_b ─ TwoFlopSync ─ GlitchFilter ─┴─ QuadratureDecoder ──┤
 //! enc_z ─ TwoFlopSync ─ GlitchFilter ────────────────────────┘ (z)
-//!                          step, forward ─┬─ Timebase + SyncEstimator ─ nep, ndt ─ SpeedCalc ─ ModeScale ×3 ─ speed_n1..n3
+//!                          step, forward ─┬─ Timebase + SyncEstimator ─ nep, ndt ─ SpeedCalc ─ SpeedHold ─ speed_n1..n3
 //!                                         └─ PcCounter, EtTimer, MtCounter ─ BaselineSpeeds ─ speed_pc, speed_et, speed_mt
 //! Startup (holds decoder and position counter through the filter delay), FaultFlags.
 //! ```
@@ -20,7 +20,6 @@ use crate::baselines::baseline_speeds::BaselineSpeeds;
 use crate::baselines::et_timer::EtTimer;
 use crate::baselines::mt_counter::MtCounter;
 use crate::baselines::pc_counter::PcCounter;
-use crate::estimator::mode_scale::ModeScale;
 use crate::estimator::speed_calc::SpeedCalc;
 use crate::estimator::speed_hold::SpeedHold;
 use crate::estimator::speed_tag::SpeedTag;
@@ -152,9 +151,6 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     position_before: DFF<Bits<C>>,
     restart_now: Signal<Local, Bits<C>>,
     window_now: Signal<Local, Bits<C>>,
-    scale_n1: ModeScale<S>,
-    scale_n2: ModeScale<S>,
-    scale_n3: ModeScale<S>,
     hold: SpeedHold<S>,
     pc: PcCounter<N>,
     et: EtTimer<N>,
@@ -179,6 +175,7 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     n_zero: Constant<Bits<N>>,
     n_one: Constant<Bits<N>>,
     min_dt: Constant<Bits<N>>,
+    above_min_dt: Constant<Bits<N>>,
     default_dt: Constant<Bits<N>>,
     default_timeout: Constant<Bits<N>>,
     mode_x1: Constant<Bits<2>>,
@@ -267,9 +264,6 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             position_before: Default::default(),
             restart_now: Default::default(),
             window_now: Default::default(),
-            scale_n1: Default::default(),
-            scale_n2: Default::default(),
-            scale_n3: Default::default(),
             hold: Default::default(),
             pc: Default::default(),
             et: Default::default(),
@@ -294,6 +288,7 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             n_zero: Constant::new(0.into()),
             n_one: Constant::new(1.into()),
             min_dt: Constant::new(MIN_DT_CYCLES.into()),
+            above_min_dt: Constant::new(crate::estimator::timebase::above_min_dt::<N>()),
             default_dt: Constant::new(p.dt_cycles().into()),
             default_timeout: Constant::new(p.timeout_dt().into()),
             mode_x1: Constant::new(u64::from(golden::frontend::MODE_X1).into()),
@@ -338,11 +333,12 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.mode_reg.d.next = self.cfg_mode.val();
         self.rst.next = self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
 
-        // Configuration: defaults for 0, dt below 2 used as 2; log2 of steps per line.
+        // Configuration: defaults for 0, dt below 2 used as 2 (tested on the bits, no
+        // comparator); log2 of steps per line.
         self.dt_eff.next = self.cfg_dt.val();
         if self.cfg_dt.val() == self.n_zero.val() {
             self.dt_eff.next = self.default_dt.val();
-        } else if self.cfg_dt.val() < self.min_dt.val() {
+        } else if (self.cfg_dt.val() & self.above_min_dt.val()) == self.n_zero.val() {
             self.dt_eff.next = self.min_dt.val();
         }
         self.dt_reg.d.next = self.dt_eff.val();
@@ -422,12 +418,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.calc.nep.next = self.table1.nep.val();
         self.calc.ndt.next = self.table1.ndt.val();
         self.calc.negative.next = !self.last_dir.q.val();
-        self.scale_n1.value.next = self.calc.speed_n1.val();
-        self.scale_n2.value.next = self.calc.speed_n2.val();
-        self.scale_n3.value.next = self.calc.speed_n3.val();
-        self.scale_n1.shift.next = self.shift.val();
-        self.scale_n2.shift.next = self.shift.val();
-        self.scale_n3.shift.next = self.shift.val();
+        self.calc.mode_shift.next = self.shift.val();
         // What each speed was computed from, published with it (`SpeedTag`).
         self.tag.reset.next = self.engine_reset.val();
         self.tag.start.next = self.table1.update.val() & self.table1.primed.val();
@@ -469,9 +460,9 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         }
         self.hold.clear.next = self.engine_reset.val();
         self.hold.load.next = self.calc.valid.val();
-        self.hold.n1_in.next = self.scale_n1.scaled.val();
-        self.hold.n2_in.next = self.scale_n2.scaled.val();
-        self.hold.n3_in.next = self.scale_n3.scaled.val();
+        self.hold.n1_in.next = self.calc.speed_n1.val();
+        self.hold.n2_in.next = self.calc.speed_n2.val();
+        self.hold.n3_in.next = self.calc.speed_n3.val();
 
         // Baselines: PC, ET, M/T on the same steps, converted at each window end.
         self.pc.reset.next = self.rst.val();

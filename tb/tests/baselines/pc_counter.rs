@@ -57,12 +57,14 @@ steps::counter_proptests!(compare_pc);
 
 fn pc_icarus<const N: usize>(seed: u64) {
     let mut model = PcModel::new(N as u32);
-    let (mut vectors, mut strobes, mut saturated) = (String::new(), 0, 0);
+    let (mut vectors, mut strobes) = (String::new(), 0);
+    let (mut saturated_up, mut saturated_down) = (0, 0);
     let mask = (1u64 << N) - 1;
     for c in long_stimulus(seed, N as u32, 40) {
         let o = model.step(pc_inputs(&c));
         strobes += usize::from(o.strobe);
-        saturated += usize::from(o.strobe && o.saturated);
+        saturated_up += usize::from(o.strobe && o.saturated && o.count > 0);
+        saturated_down += usize::from(o.strobe && o.saturated && o.count < 0);
         vectors += &format!(
             "{:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
             u8::from(c.reset),
@@ -75,7 +77,15 @@ fn pc_icarus<const N: usize>(seed: u64) {
         );
     }
     if N == 8 {
-        assert!(saturated > 0, "the stimulus must saturate the count");
+        // Both clamps: the count's top bit is rebuilt from the carry and the borrow.
+        assert!(
+            saturated_up > 0,
+            "the stimulus must saturate the count upwards"
+        );
+        assert!(
+            saturated_down > 0,
+            "the stimulus must saturate the count downwards"
+        );
     }
     let tb = common::replay_bench(
         "pc_counter",

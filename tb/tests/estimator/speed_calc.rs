@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! `SpeedCalc` against its bit-true model `golden::estimator::speed_calc::SpeedCalcModel`, every cycle:
 //! the rust-hdl simulation (direct drive) on proptest stimuli for N = 8, 16, 24, 32 and
-//! F = 0, 8, 16, 24 (random start timings, starts while busy, random resets), and the
+//! F = 0, 8, 16, 24 (random start timings, starts while busy, random resets, every mode
+//! shift), and the
 //! emitted Verilog in Icarus Verilog (a self-checking bench written under `target/` at test
 //! time), because rust-hdl's simulator and its Verilog can disagree. The model computes the
-//! speeds exactly from the fractions (u128), so a match proves the hardware's divider,
-//! multiplier and rounding exact; the model itself is checked against hand-worked values and
+//! speeds exactly from the fractions (u128) and mode-scales them with a second rounding, so
+//! a match proves the hardware's divider, multiplier and its one-adder rounding and scaling
+//! exact; the model itself is checked against hand-worked values and
 //! f64 in `golden/tests/speed_calc.rs`.
 
 use crate::common;
@@ -28,6 +30,7 @@ fn step<const N: usize, const F: usize, const P: usize, const S: usize>(
     uut.nep.next = inp.nep.into();
     uut.ndt.next = inp.ndt.into();
     uut.negative.next = inp.negative;
+    uut.mode_shift.next = u64::from(inp.shift).into();
     uut.clock.next = Clock { clk: false };
     assert!(simulate(uut, 100), "design did not settle");
     uut.clock.next = Clock { clk: true };
@@ -51,6 +54,8 @@ struct Cycle {
     nep: u64,
     ndt: u64,
     negative: bool,
+    /// Mode shift 0..=3 (3 acts as 2).
+    shift: u32,
 }
 
 /// A counter value for any N up to 32, often a corner; [`inputs`] masks it to N bits (so
@@ -70,14 +75,20 @@ fn raw_counter() -> impl Strategy<Value = u64> {
 }
 
 fn cycle() -> impl Strategy<Value = Cycle> {
-    (0u16..1000, raw_counter(), raw_counter(), any::<bool>()).prop_map(
-        |(roll, nep, ndt, negative)| Cycle {
+    (
+        0u16..1000,
+        raw_counter(),
+        raw_counter(),
+        any::<bool>(),
+        0u32..4,
+    )
+        .prop_map(|(roll, nep, ndt, negative, shift)| Cycle {
             roll,
             nep,
             ndt,
             negative,
-        },
-    )
+            shift,
+        })
 }
 
 /// Start rate per 1000 cycles: bursts (starts in most cycles, nearly all while busy), about
@@ -94,6 +105,7 @@ fn inputs(f: SpeedFormat, rate: u16, c: &Cycle) -> SpeedCalcInputs {
         nep: c.nep & max,
         ndt: c.ndt & max,
         negative: c.negative,
+        shift: c.shift,
     }
 }
 
@@ -181,6 +193,7 @@ fn back_to_back_starts_give_one_result_per_latency() {
             nep: (k as u64 * 7919 + 13) % 70_000,
             ndt: k as u64 % 5,
             negative: k.is_multiple_of(3),
+            shift: (k % 4) as u32,
         })
         .collect();
     assert_eq!(compare::<16, 8, 33, 25>(600, &cycles).unwrap(), 6);
@@ -192,15 +205,17 @@ fn back_to_back_starts_give_one_result_per_latency() {
 const BENCH: &str = r#"module speed_calc_tb;
     reg clock = 1'b0;
     reg reset = 1'b0, start = 1'b0, negative = 1'b0;
+    reg [1:0] mode_shift = 2'd0;
     reg [`N-1:0] nep = 0, ndt = 0;
     wire busy, valid;
     wire [`S-1:0] speed_n1, speed_n2, speed_n3;
     reg e_reset, e_start, e_neg, e_busy, e_valid;
+    reg [1:0] e_shift;
     reg [`N-1:0] e_nep, e_ndt;
     reg [`S-1:0] e_n1, e_n2, e_n3;
     integer fd, n, cycles, errors, valids;
     speed_calc uut(.clock(clock), .reset(reset), .start(start), .nep(nep), .ndt(ndt),
-        .negative(negative), .speed_n1(speed_n1), .speed_n2(speed_n2),
+        .negative(negative), .mode_shift(mode_shift), .speed_n1(speed_n1), .speed_n2(speed_n2),
         .speed_n3(speed_n3), .valid(valid), .busy(busy));
     initial begin
         cycles = 0; errors = 0; valids = 0;
@@ -209,10 +224,11 @@ const BENCH: &str = r#"module speed_calc_tb;
             $display("RESULT FAIL cannot open vectors.txt");
             $finish;
         end
-        n = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h\n", e_reset, e_start, e_nep, e_ndt,
-            e_neg, e_busy, e_valid, e_n1, e_n2, e_n3);
-        while (n == 10) begin
+        n = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h %h\n", e_reset, e_start, e_nep, e_ndt,
+            e_neg, e_shift, e_busy, e_valid, e_n1, e_n2, e_n3);
+        while (n == 11) begin
             reset = e_reset; start = e_start; nep = e_nep; ndt = e_ndt; negative = e_neg;
+            mode_shift = e_shift;
             #5 clock = 1'b1;
             #1;
             if (busy !== e_busy || valid !== e_valid || speed_n1 !== e_n1
@@ -226,8 +242,8 @@ const BENCH: &str = r#"module speed_calc_tb;
             if (valid === 1'b1) valids = valids + 1;
             cycles = cycles + 1;
             #4 clock = 1'b0;
-            n = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h\n", e_reset, e_start, e_nep,
-                e_ndt, e_neg, e_busy, e_valid, e_n1, e_n2, e_n3);
+            n = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h %h\n", e_reset, e_start, e_nep,
+                e_ndt, e_neg, e_shift, e_busy, e_valid, e_n1, e_n2, e_n3);
         end
         $fclose(fd);
         if (errors == 0 && cycles > 0)
@@ -274,19 +290,28 @@ fn icarus_equals_model<const N: usize, const F: usize, const P: usize, const S: 
             nep: rng.counter(),
             ndt: rng.counter(),
             negative: rng.next().is_multiple_of(2),
+            shift: (rng.next() % 4) as u32,
         };
         let i = inputs(f, rate, &c);
         let o = model.step(i);
         valids += u32::from(o.valid);
         negatives += u32::from(o.valid && o.speeds.n3 < 0);
-        saturated += u32::from(o.valid && o.speeds.n1.abs() == f.max_magnitude());
+        // Ndt = 0 saturates n1 to the largest magnitude, mode-scaled by 1, 2 or 4.
+        let max = f.max_magnitude();
+        saturated += u32::from(
+            o.valid
+                && (0..3).any(|s| {
+                    o.speeds.n1.abs() == golden::estimator::speed_calc::mode_scale(max, s)
+                }),
+        );
         vectors += &format!(
-            "{:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
+            "{:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
             u8::from(i.reset),
             u8::from(i.start),
             i.nep,
             i.ndt,
             u8::from(i.negative),
+            i.shift,
             u8::from(o.busy),
             u8::from(o.valid),
             f.to_raw(o.speeds.n1),
