@@ -103,7 +103,7 @@
 //! LUT4 and 278 carry cells: 75 LUT4 more than before the mode scaling moved in, against
 //! about 870 for the three scalers it replaced. The critical path of `encspeed_core` and
 //! `encspeed_wb` on the iCE40 HX8K is the divider's P-bit trial subtraction into the
-//! quotient and partial remainder: 49 carry cells, about 12 ns of an 18 ns path, so no
+//! quotient and partial remainder: 49 carry cells, 10.5 ns of an 18 ns path, so no
 //! placement reaches 100 MHz until that subtraction is split over two cycles
 //! (docs/benchmarks.md).
 
