@@ -5,7 +5,7 @@
 // Derived: omega_lim = 0.9765625 rev/s at dt_cycles, timeout_dt = 1000 dt intervals, counters saturate at 16777215
 // Function: quadrature encoder interface: filtered x1/x2/x4 decoding, position, Rairan (2013) synchronised speed n1/n2/n3 and the PC, ET and M/T baselines in hardware, faults.
 // Speeds: two's complement, 41 bits, speed_frac_bits = 16: value = raw * 2^-16 omega_lim (one line per dt).
-// Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 128; A/B edge that restarts Table 1 to speed_strobe 134.
+// Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 255; A/B edge that restarts Table 1 to speed_strobe 261.
 // Ports:
 //   input  clock: core clock; everything happens at its rising edge
 //   input  reset: synchronous, active high; hold it for at least one edge
@@ -2477,12 +2477,15 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
     reg  pending$d;
     wire  pending$q;
     reg  pending$clock;
-    reg  [48:0] w_nep$d;
-    wire  [48:0] w_nep$q;
+    reg  [23:0] w_nep$d;
+    wire  [23:0] w_nep$q;
     reg  w_nep$clock;
-    reg  [48:0] w_ndt$d;
-    wire  [48:0] w_ndt$q;
+    reg  [23:0] w_ndt$d;
+    wire  [23:0] w_ndt$q;
     reg  w_ndt$clock;
+    reg  w_high$d;
+    wire  w_high$q;
+    reg  w_high$clock;
     reg  w_neg$d;
     wire  w_neg$q;
     reg  w_neg$clock;
@@ -2504,6 +2507,9 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
     reg  [5:0] count$d;
     wire  [5:0] count$q;
     reg  count$clock;
+    reg  second$d;
+    wire  second$q;
+    reg  second$clock;
     reg  mul_on$d;
     wire  mul_on$q;
     reg  mul_on$clock;
@@ -2546,18 +2552,36 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
-    reg  [48:0] div$rem;
-    reg  div$bit_in;
-    reg  [48:0] div$den;
-    wire  [48:0] div$next_rem;
-    wire  div$fits;
+    reg  div_sub$clock;
+    reg  [48:0] div_sub$a;
+    reg  [48:0] div_sub$b;
+    reg  div_sub$carry_in;
+    wire  [48:0] div_sub$sum;
+    reg  mul_den$clock;
+    reg  [48:0] mul_den$a;
+    reg  [48:0] mul_den$b;
+    reg  mul_den$carry_in;
+    wire  [48:0] mul_den$sum;
+    reg  mul_num$clock;
+    reg  [48:0] mul_num$a;
+    reg  [48:0] mul_num$b;
+    reg  mul_num$carry_in;
+    wire  [48:0] mul_num$sum;
+    reg  round_add$clock;
+    reg  [40:0] round_add$a;
+    reg  [40:0] round_add$b;
+    reg  round_add$carry_in;
+    wire  [40:0] round_add$sum;
     
     // Local signals
-    reg  [48:0] req_nep_wide;
-    reg  [48:0] req_ndt_wide;
-    reg  high;
+    reg  [48:0] nep_wide;
+    reg  [48:0] ndt_wide;
     reg  [48:0] num_sel;
     reg  [48:0] den_sel;
+    reg  [48:0] shifted;
+    reg  shifted_msb;
+    reg  den_msb;
+    reg  diff_msb;
     reg  fits;
     reg  [48:0] next_rem;
     reg  x_bit;
@@ -2568,6 +2592,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
     reg  [40:0] addend;
     reg  [40:0] increment;
     reg  [40:0] sum;
+    reg  sum_negative;
     reg  [40:0] rounded;
     
     // Sub module instances
@@ -2606,6 +2631,11 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         .q(w_ndt$q),
         .clock(w_ndt$clock)
     );
+    encspeed_core$calc$w_high w_high(
+        .d(w_high$d),
+        .q(w_high$q),
+        .clock(w_high$clock)
+    );
     encspeed_core$calc$w_neg w_neg(
         .d(w_neg$d),
         .q(w_neg$q),
@@ -2640,6 +2670,11 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
+    );
+    encspeed_core$calc$second second(
+        .d(second$d),
+        .q(second$q),
+        .clock(second$clock)
     );
     encspeed_core$calc$mul_on mul_on(
         .d(mul_on$d),
@@ -2711,12 +2746,33 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         .q(valid_reg$q),
         .clock(valid_reg$clock)
     );
-    encspeed_core$calc$div div(
-        .rem(div$rem),
-        .bit_in(div$bit_in),
-        .den(div$den),
-        .next_rem(div$next_rem),
-        .fits(div$fits)
+    encspeed_core$calc$div_sub div_sub(
+        .clock(div_sub$clock),
+        .a(div_sub$a),
+        .b(div_sub$b),
+        .carry_in(div_sub$carry_in),
+        .sum(div_sub$sum)
+    );
+    encspeed_core$calc$mul_den mul_den(
+        .clock(mul_den$clock),
+        .a(mul_den$a),
+        .b(mul_den$b),
+        .carry_in(mul_den$carry_in),
+        .sum(mul_den$sum)
+    );
+    encspeed_core$calc$mul_num mul_num(
+        .clock(mul_num$clock),
+        .a(mul_num$a),
+        .b(mul_num$b),
+        .carry_in(mul_num$carry_in),
+        .sum(mul_num$sum)
+    );
+    encspeed_core$calc$round_add round_add(
+        .clock(round_add$clock),
+        .a(round_add$a),
+        .b(round_add$b),
+        .carry_in(round_add$carry_in),
+        .sum(round_add$sum)
     );
     
     // Update code
@@ -2728,6 +2784,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         pending$clock = clock;
         w_nep$clock = clock;
         w_ndt$clock = clock;
+        w_high$clock = clock;
         w_neg$clock = clock;
         w_shift$clock = clock;
         w_nep_zero$clock = clock;
@@ -2735,6 +2792,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         state$clock = clock;
         phase$clock = clock;
         count$clock = clock;
+        second$clock = clock;
         mul_on$clock = clock;
         part_rem$clock = clock;
         num_shift$clock = clock;
@@ -2756,6 +2814,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         pending$d = pending$q;
         w_nep$d = w_nep$q;
         w_ndt$d = w_ndt$q;
+        w_high$d = w_high$q;
         w_neg$d = w_neg$q;
         w_shift$d = w_shift$q;
         w_nep_zero$d = w_nep_zero$q;
@@ -2763,6 +2822,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         state$d = state$q;
         phase$d = phase$q;
         count$d = count$q;
+        second$d = second$q;
         mul_on$d = mul_on$q;
         part_rem$d = part_rem$q;
         num_shift$d = num_shift$q;
@@ -2777,325 +2837,350 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         out_n2$d = out_n2$q;
         out_n3$d = out_n3$q;
         valid_reg$d = valid_reg$q;
-        req_nep_wide = p_zero;
-        req_ndt_wide = p_zero;
-        if (req_nep$q[0]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        div_sub$clock = clock;
+        mul_den$clock = clock;
+        mul_num$clock = clock;
+        round_add$clock = clock;
+        nep_wide = p_zero;
+        ndt_wide = p_zero;
+        if (w_nep$q[0]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[0]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[1]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[0]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[1]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[2]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[1]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[2]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[3]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[1]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[3]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[4]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[2]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[4]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[5]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[2]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[5]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[6]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[3]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[6]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[7]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[3]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[7]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[8]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[4]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[8]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[9]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[4]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[9]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[10]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[5]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[10]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[11]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[5]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[11]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[12]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[6]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[12]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[13]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[6]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[13]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[14]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[7]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[14]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[15]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[7]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[15]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[16]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[8]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[16]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[17]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[8]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[17]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[18]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[9]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[18]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[19]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[9]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[19]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[20]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[10]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[20]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[21]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[10]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[21]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[22]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_nep$q[11]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        if (req_ndt$q[22]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
-        end
-        else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
-        end
-        if (req_nep$q[23]) begin
-            req_nep_wide = (req_nep_wide >> sh_one) | p_msb;
+        if (w_ndt$q[11]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
         end
         else begin
-            req_nep_wide = req_nep_wide >> sh_one;
+            ndt_wide = ndt_wide >> sh_one;
         end
-        if (req_ndt$q[23]) begin
-            req_ndt_wide = (req_ndt_wide >> sh_one) | p_msb;
+        if (w_nep$q[12]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
         end
         else begin
-            req_ndt_wide = req_ndt_wide >> sh_one;
+            nep_wide = nep_wide >> sh_one;
         end
-        req_nep_wide = req_nep_wide >> sh_low;
-        req_ndt_wide = req_ndt_wide >> sh_low;
-        high = (w_ndt$q << sh_one) <= w_nep$q;
-        num_sel = w_nep$q;
-        den_sel = w_ndt$q;
+        if (w_ndt$q[12]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[13]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[13]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[14]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[14]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[15]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[15]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[16]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[16]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[17]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[17]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[18]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[18]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[19]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[19]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[20]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[20]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[21]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[21]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[22]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[22]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        if (w_nep$q[23]) begin
+            nep_wide = (nep_wide >> sh_one) | p_msb;
+        end
+        else begin
+            nep_wide = nep_wide >> sh_one;
+        end
+        if (w_ndt$q[23]) begin
+            ndt_wide = (ndt_wide >> sh_one) | p_msb;
+        end
+        else begin
+            ndt_wide = ndt_wide >> sh_one;
+        end
+        nep_wide = nep_wide >> sh_low;
+        ndt_wide = ndt_wide >> sh_low;
+        num_sel = nep_wide;
+        den_sel = ndt_wide;
         if (phase$q == ph_two) begin
-            if (high) begin
-                num_sel = w_nep$q - p_one;
+            if (w_high$q) begin
+                num_sel = nep_wide - p_one;
             end
             else begin
-                den_sel = w_ndt$q + p_one;
+                den_sel = ndt_wide + p_one;
             end
         end
         if (phase$q == ph_three) begin
-            if (high) begin
+            if (w_high$q) begin
                 num_sel = acc_num$q;
                 den_sel = acc_den$q;
             end
             else begin
-                num_sel = w_nep$q << sh_one;
-                den_sel = (w_ndt$q << sh_one) | p_one;
+                num_sel = nep_wide << sh_one;
+                den_sel = (ndt_wide << sh_one) | p_one;
             end
         end
-        div$rem = part_rem$q;
-        div$bit_in = (num_shift$q & p_msb) != p_zero;
-        div$den = den$q;
-        fits = div$fits;
-        next_rem = div$next_rem;
+        shifted = part_rem$q << sh_one;
+        if ((num_shift$q & p_msb) != p_zero) begin
+            shifted = (part_rem$q << sh_one) | p_one;
+        end
+        div_sub$a = shifted;
+        div_sub$b = ~den$q;
+        div_sub$carry_in = 1'b1;
+        shifted_msb = (shifted & p_msb) != p_zero;
+        den_msb = (den$q & p_msb) != p_zero;
+        diff_msb = (div_sub$sum & p_msb) != p_zero;
+        fits = ((part_rem$q & p_msb) != p_zero) | (shifted_msb & ~den_msb) | ((shifted_msb | ~den_msb) & ~diff_msb);
+        next_rem = shifted;
+        if (fits) begin
+            next_rem = div_sub$sum;
+        end
         x_bit = (mul_x$q & p_x_msb) != p_zero;
+        mul_den$a = acc_den$q << sh_one;
+        mul_den$b = p_zero;
+        mul_den$carry_in = 1'b0;
+        mul_num$a = acc_num$q << sh_one;
+        mul_num$b = p_zero;
+        mul_num$carry_in = 1'b0;
+        if (x_bit) begin
+            mul_den$b = ndt_wide;
+            if (count$q != count_mul_last) begin
+                mul_num$b = nep_wide;
+            end
+        end
         half = quo$q >> sh_one;
         round_bit = (quo$q & s_one) != s_zero;
         if (w_ndt_zero$q) begin
@@ -3138,33 +3223,42 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
                 end
             end
         end
-        sum = addend + increment;
+        round_add$a = addend;
+        round_add$b = increment;
+        round_add$carry_in = 1'b0;
+        sum = round_add$sum;
+        sum_negative = w_neg$q & ((sum & s_msb) != s_zero);
         rounded = sum;
         if (by_two) begin
             rounded = sum >> sh_one;
-            if (w_neg$q & ((sum & s_msb) != s_zero)) begin
+            if (sum_negative) begin
                 rounded = (sum >> sh_one) | s_msb;
             end
         end
         if (by_four) begin
             rounded = sum >> sh_two;
-            if (w_neg$q & ((sum & s_msb) != s_zero)) begin
+            if (sum_negative) begin
                 rounded = (sum >> sh_two) | s_fill_two;
             end
         end
         valid_reg$d = 1'b0;
         if ((state$q == st_idle) & pending$q) begin
-            w_nep$d = req_nep_wide;
-            w_ndt$d = req_ndt_wide;
+            w_nep$d = req_nep$q;
+            w_ndt$d = req_ndt$q;
+            w_high$d = req_ndt$q <= (req_nep$q >> sh_one);
             w_neg$d = req_neg$q;
             w_shift$d = req_shift$q;
             w_nep_zero$d = req_nep$q == n_zero;
             w_ndt_zero$d = req_ndt$q == n_zero;
             pending$d = 1'b0;
             phase$d = ph_one;
+            second$d = 1'b0;
             state$d = st_setup;
         end
-        if (state$q == st_setup) begin
+        if (state$q != st_idle) begin
+            second$d = ~second$q;
+        end
+        if ((state$q == st_setup) & second$q) begin
             part_rem$d = num_sel >> sh_n;
             num_shift$d = num_sel << sh_low;
             den$d = den_sel;
@@ -3172,7 +3266,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
             count$d = count_first;
             state$d = st_step;
             if (phase$q == ph_one) begin
-                mul_x$d = (w_nep$q << sh_one) - p_one;
+                mul_x$d = (nep_wide << sh_one) - p_one;
                 acc_num$d = p_zero;
                 acc_den$d = p_zero;
                 mul_on$d = 1'b1;
@@ -3184,7 +3278,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
                 stage_n2$d = rounded;
             end
         end
-        if (state$q == st_step) begin
+        if ((state$q == st_step) & second$q) begin
             part_rem$d = next_rem;
             num_shift$d = num_shift$q << sh_one;
             quo$d = quo$q << sh_one;
@@ -3194,14 +3288,8 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
             count$d = count$q - count_one;
             if (mul_on$q) begin
                 mul_x$d = mul_x$q << sh_one;
-                acc_num$d = acc_num$q << sh_one;
-                acc_den$d = acc_den$q << sh_one;
-                if (x_bit) begin
-                    acc_den$d = (acc_den$q << sh_one) + w_ndt$q;
-                    if (count$q != count_mul_last) begin
-                        acc_num$d = (acc_num$q << sh_one) + w_nep$q;
-                    end
-                end
+                acc_num$d = mul_num$sum;
+                acc_den$d = mul_den$sum;
                 if (count$q == count_mul_last) begin
                     mul_on$d = 1'b0;
                 end
@@ -3214,7 +3302,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
                 end
             end
         end
-        if (state$q == st_finish) begin
+        if ((state$q == st_finish) & second$q) begin
             out_n1$d = stage_n1$q;
             out_n2$d = stage_n2$q;
             out_n3$d = rounded;
@@ -3231,6 +3319,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         if (reset) begin
             pending$d = 1'b0;
             mul_on$d = 1'b0;
+            second$d = 1'b0;
             state$d = st_idle;
             valid_reg$d = 1'b0;
             out_n1$d = s_zero;
@@ -3323,48 +3412,427 @@ module encspeed_core$calc$den(d,q,clock);
 endmodule // encspeed_core$calc$den
 
 
-module encspeed_core$calc$div(rem,bit_in,den,next_rem,fits);
+module encspeed_core$calc$div_sub(clock,a,b,carry_in,sum);
     
     // Module arguments
-    input wire  [48:0] rem;
-    input wire  bit_in;
-    input wire  [48:0] den;
-    output reg  [48:0] next_rem;
-    output reg  fits;
+    input wire  clock;
+    input wire  [48:0] a;
+    input wire  [48:0] b;
+    input wire  carry_in;
+    output reg  [48:0] sum;
     
     // Constant declarations
     localparam  zero = 49'h0;
     localparam  one = 49'h1;
-    localparam  msb = 49'h1000000000000;
+    localparam  low_mask = 49'h1ffffff;
+    localparam  low_carry = 49'h4000000;
     localparam  sh_one = 8'h1;
+    localparam  sh_low = 8'h19;
+    
+    // Stub signals
+    reg  [48:0] low$d;
+    wire  [48:0] low$q;
+    reg  low$clock;
+    reg  [48:0] high_a_reg$d;
+    wire  [48:0] high_a_reg$q;
+    reg  high_a_reg$clock;
+    reg  [48:0] high_b_reg$d;
+    wire  [48:0] high_b_reg$q;
+    reg  high_b_reg$clock;
     
     // Local signals
-    reg  [48:0] shifted;
-    reg  [48:0] diff;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  borrow;
-    reg  l_fits;
+    reg  [48:0] low_a;
+    reg  [48:0] low_b;
+    reg  mid_carry;
+    reg  [48:0] high_a;
+    reg  [48:0] high_b;
+    reg  [48:0] high_sum;
+    
+    // Sub module instances
+    encspeed_core$calc$div_sub$low low(
+        .d(low$d),
+        .q(low$q),
+        .clock(low$clock)
+    );
+    encspeed_core$calc$div_sub$high_a_reg high_a_reg(
+        .d(high_a_reg$d),
+        .q(high_a_reg$q),
+        .clock(high_a_reg$clock)
+    );
+    encspeed_core$calc$div_sub$high_b_reg high_b_reg(
+        .d(high_b_reg$d),
+        .q(high_b_reg$q),
+        .clock(high_b_reg$clock)
+    );
     
     // Update code
     always @(*) begin
-        shifted = rem << sh_one;
-        if (bit_in) begin
-            shifted = (rem << sh_one) | one;
+        low$clock = clock;
+        high_a_reg$clock = clock;
+        high_b_reg$clock = clock;
+        low$d = low$q;
+        high_a_reg$d = high_a_reg$q;
+        high_b_reg$d = high_b_reg$q;
+        low_a = (a & low_mask) << sh_one;
+        low_b = (b & low_mask) << sh_one;
+        if (carry_in) begin
+            low_a = ((a & low_mask) << sh_one) | one;
+            low_b = ((b & low_mask) << sh_one) | one;
         end
-        diff = shifted - den;
-        shifted_msb = (shifted & msb) != zero;
-        den_msb = (den & msb) != zero;
-        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & msb) != zero));
-        l_fits = ((rem & msb) != zero) | (~borrow);
-        next_rem = shifted;
-        if (l_fits) begin
-            next_rem = diff;
+        low$d = low_a + low_b;
+        mid_carry = (low$q & low_carry) != zero;
+        high_a_reg$d = a >> sh_low;
+        high_b_reg$d = b >> sh_low;
+        high_a = high_a_reg$q << sh_one;
+        high_b = high_b_reg$q << sh_one;
+        if (mid_carry) begin
+            high_a = (high_a_reg$q << sh_one) | one;
+            high_b = (high_b_reg$q << sh_one) | one;
         end
-        fits = l_fits;
+        high_sum = high_a + high_b;
+        sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
     end
     
-endmodule // encspeed_core$calc$div
+endmodule // encspeed_core$calc$div_sub
+
+
+module encspeed_core$calc$div_sub$high_a_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$div_sub$high_a_reg
+
+
+module encspeed_core$calc$div_sub$high_b_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$div_sub$high_b_reg
+
+
+module encspeed_core$calc$div_sub$low(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$div_sub$low
+
+
+module encspeed_core$calc$mul_den(clock,a,b,carry_in,sum);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [48:0] a;
+    input wire  [48:0] b;
+    input wire  carry_in;
+    output reg  [48:0] sum;
+    
+    // Constant declarations
+    localparam  zero = 49'h0;
+    localparam  one = 49'h1;
+    localparam  low_mask = 49'h1ffffff;
+    localparam  low_carry = 49'h4000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_low = 8'h19;
+    
+    // Stub signals
+    reg  [48:0] low$d;
+    wire  [48:0] low$q;
+    reg  low$clock;
+    reg  [48:0] high_a_reg$d;
+    wire  [48:0] high_a_reg$q;
+    reg  high_a_reg$clock;
+    reg  [48:0] high_b_reg$d;
+    wire  [48:0] high_b_reg$q;
+    reg  high_b_reg$clock;
+    
+    // Local signals
+    reg  [48:0] low_a;
+    reg  [48:0] low_b;
+    reg  mid_carry;
+    reg  [48:0] high_a;
+    reg  [48:0] high_b;
+    reg  [48:0] high_sum;
+    
+    // Sub module instances
+    encspeed_core$calc$mul_den$low low(
+        .d(low$d),
+        .q(low$q),
+        .clock(low$clock)
+    );
+    encspeed_core$calc$mul_den$high_a_reg high_a_reg(
+        .d(high_a_reg$d),
+        .q(high_a_reg$q),
+        .clock(high_a_reg$clock)
+    );
+    encspeed_core$calc$mul_den$high_b_reg high_b_reg(
+        .d(high_b_reg$d),
+        .q(high_b_reg$q),
+        .clock(high_b_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        low$clock = clock;
+        high_a_reg$clock = clock;
+        high_b_reg$clock = clock;
+        low$d = low$q;
+        high_a_reg$d = high_a_reg$q;
+        high_b_reg$d = high_b_reg$q;
+        low_a = (a & low_mask) << sh_one;
+        low_b = (b & low_mask) << sh_one;
+        if (carry_in) begin
+            low_a = ((a & low_mask) << sh_one) | one;
+            low_b = ((b & low_mask) << sh_one) | one;
+        end
+        low$d = low_a + low_b;
+        mid_carry = (low$q & low_carry) != zero;
+        high_a_reg$d = a >> sh_low;
+        high_b_reg$d = b >> sh_low;
+        high_a = high_a_reg$q << sh_one;
+        high_b = high_b_reg$q << sh_one;
+        if (mid_carry) begin
+            high_a = (high_a_reg$q << sh_one) | one;
+            high_b = (high_b_reg$q << sh_one) | one;
+        end
+        high_sum = high_a + high_b;
+        sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
+    end
+    
+endmodule // encspeed_core$calc$mul_den
+
+
+module encspeed_core$calc$mul_den$high_a_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$mul_den$high_a_reg
+
+
+module encspeed_core$calc$mul_den$high_b_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$mul_den$high_b_reg
+
+
+module encspeed_core$calc$mul_den$low(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$mul_den$low
+
+
+module encspeed_core$calc$mul_num(clock,a,b,carry_in,sum);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [48:0] a;
+    input wire  [48:0] b;
+    input wire  carry_in;
+    output reg  [48:0] sum;
+    
+    // Constant declarations
+    localparam  zero = 49'h0;
+    localparam  one = 49'h1;
+    localparam  low_mask = 49'h1ffffff;
+    localparam  low_carry = 49'h4000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_low = 8'h19;
+    
+    // Stub signals
+    reg  [48:0] low$d;
+    wire  [48:0] low$q;
+    reg  low$clock;
+    reg  [48:0] high_a_reg$d;
+    wire  [48:0] high_a_reg$q;
+    reg  high_a_reg$clock;
+    reg  [48:0] high_b_reg$d;
+    wire  [48:0] high_b_reg$q;
+    reg  high_b_reg$clock;
+    
+    // Local signals
+    reg  [48:0] low_a;
+    reg  [48:0] low_b;
+    reg  mid_carry;
+    reg  [48:0] high_a;
+    reg  [48:0] high_b;
+    reg  [48:0] high_sum;
+    
+    // Sub module instances
+    encspeed_core$calc$mul_num$low low(
+        .d(low$d),
+        .q(low$q),
+        .clock(low$clock)
+    );
+    encspeed_core$calc$mul_num$high_a_reg high_a_reg(
+        .d(high_a_reg$d),
+        .q(high_a_reg$q),
+        .clock(high_a_reg$clock)
+    );
+    encspeed_core$calc$mul_num$high_b_reg high_b_reg(
+        .d(high_b_reg$d),
+        .q(high_b_reg$q),
+        .clock(high_b_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        low$clock = clock;
+        high_a_reg$clock = clock;
+        high_b_reg$clock = clock;
+        low$d = low$q;
+        high_a_reg$d = high_a_reg$q;
+        high_b_reg$d = high_b_reg$q;
+        low_a = (a & low_mask) << sh_one;
+        low_b = (b & low_mask) << sh_one;
+        if (carry_in) begin
+            low_a = ((a & low_mask) << sh_one) | one;
+            low_b = ((b & low_mask) << sh_one) | one;
+        end
+        low$d = low_a + low_b;
+        mid_carry = (low$q & low_carry) != zero;
+        high_a_reg$d = a >> sh_low;
+        high_b_reg$d = b >> sh_low;
+        high_a = high_a_reg$q << sh_one;
+        high_b = high_b_reg$q << sh_one;
+        if (mid_carry) begin
+            high_a = (high_a_reg$q << sh_one) | one;
+            high_b = (high_b_reg$q << sh_one) | one;
+        end
+        high_sum = high_a + high_b;
+        sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
+    end
+    
+endmodule // encspeed_core$calc$mul_num
+
+
+module encspeed_core$calc$mul_num$high_a_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$mul_num$high_a_reg
+
+
+module encspeed_core$calc$mul_num$high_b_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$mul_num$high_b_reg
+
+
+module encspeed_core$calc$mul_num$low(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$mul_num$low
 
 
 module encspeed_core$calc$mul_on(d,q,clock);
@@ -3633,6 +4101,166 @@ module encspeed_core$calc$req_shift(d,q,clock);
 endmodule // encspeed_core$calc$req_shift
 
 
+module encspeed_core$calc$round_add(clock,a,b,carry_in,sum);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [40:0] a;
+    input wire  [40:0] b;
+    input wire  carry_in;
+    output reg  [40:0] sum;
+    
+    // Constant declarations
+    localparam  zero = 41'h0;
+    localparam  one = 41'h1;
+    localparam  low_mask = 41'h1fffff;
+    localparam  low_carry = 41'h400000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_low = 8'h15;
+    
+    // Stub signals
+    reg  [40:0] low$d;
+    wire  [40:0] low$q;
+    reg  low$clock;
+    reg  [40:0] high_a_reg$d;
+    wire  [40:0] high_a_reg$q;
+    reg  high_a_reg$clock;
+    reg  [40:0] high_b_reg$d;
+    wire  [40:0] high_b_reg$q;
+    reg  high_b_reg$clock;
+    
+    // Local signals
+    reg  [40:0] low_a;
+    reg  [40:0] low_b;
+    reg  mid_carry;
+    reg  [40:0] high_a;
+    reg  [40:0] high_b;
+    reg  [40:0] high_sum;
+    
+    // Sub module instances
+    encspeed_core$calc$round_add$low low(
+        .d(low$d),
+        .q(low$q),
+        .clock(low$clock)
+    );
+    encspeed_core$calc$round_add$high_a_reg high_a_reg(
+        .d(high_a_reg$d),
+        .q(high_a_reg$q),
+        .clock(high_a_reg$clock)
+    );
+    encspeed_core$calc$round_add$high_b_reg high_b_reg(
+        .d(high_b_reg$d),
+        .q(high_b_reg$q),
+        .clock(high_b_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        low$clock = clock;
+        high_a_reg$clock = clock;
+        high_b_reg$clock = clock;
+        low$d = low$q;
+        high_a_reg$d = high_a_reg$q;
+        high_b_reg$d = high_b_reg$q;
+        low_a = (a & low_mask) << sh_one;
+        low_b = (b & low_mask) << sh_one;
+        if (carry_in) begin
+            low_a = ((a & low_mask) << sh_one) | one;
+            low_b = ((b & low_mask) << sh_one) | one;
+        end
+        low$d = low_a + low_b;
+        mid_carry = (low$q & low_carry) != zero;
+        high_a_reg$d = a >> sh_low;
+        high_b_reg$d = b >> sh_low;
+        high_a = high_a_reg$q << sh_one;
+        high_b = high_b_reg$q << sh_one;
+        if (mid_carry) begin
+            high_a = (high_a_reg$q << sh_one) | one;
+            high_b = (high_b_reg$q << sh_one) | one;
+        end
+        high_sum = high_a + high_b;
+        sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
+    end
+    
+endmodule // encspeed_core$calc$round_add
+
+
+module encspeed_core$calc$round_add$high_a_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$round_add$high_a_reg
+
+
+module encspeed_core$calc$round_add$high_b_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$round_add$high_b_reg
+
+
+module encspeed_core$calc$round_add$low(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$round_add$low
+
+
+module encspeed_core$calc$second(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$second
+
+
 module encspeed_core$calc$stage_n1(d,q,clock);
     
     // Module arguments
@@ -3709,16 +4337,35 @@ module encspeed_core$calc$valid_reg(d,q,clock);
 endmodule // encspeed_core$calc$valid_reg
 
 
-module encspeed_core$calc$w_ndt(d,q,clock);
+module encspeed_core$calc$w_high(d,q,clock);
     
     // Module arguments
-    input wire  [48:0] d;
-    output reg  [48:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 49'h0;
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$w_high
+
+
+module encspeed_core$calc$w_ndt(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
     end
     
     always @(posedge clock) begin
@@ -3769,13 +4416,13 @@ endmodule // encspeed_core$calc$w_neg
 module encspeed_core$calc$w_nep(d,q,clock);
     
     // Module arguments
-    input wire  [48:0] d;
-    output reg  [48:0] q;
+    input wire  [23:0] d;
+    output reg  [23:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 49'h0;
+       q = 24'h0;
     end
     
     always @(posedge clock) begin
@@ -5035,6 +5682,9 @@ module encspeed_core$faults(clock,reset,clear_faults,illegal,rejected_a,rejected
     // Constant declarations
     localparam  zero = 16'h0;
     localparam  one = 16'h1;
+    localparam  two = 16'h2;
+    localparam  three = 16'h3;
+    localparam  four = 16'h4;
     localparam  max = 16'hffff;
     
     // Stub signals
@@ -5052,9 +5702,9 @@ module encspeed_core$faults(clock,reset,clear_faults,illegal,rejected_a,rejected
     reg  count$clock;
     
     // Local signals
-    reg  [15:0] count_wide;
+    reg  [15:0] rejected;
     reg  [15:0] sum;
-    reg  [15:0] ab;
+    reg  [15:0] low_sum;
     
     // Sub module instances
     encspeed_core$faults$illegal_reg illegal_reg(
@@ -5091,19 +5741,19 @@ module encspeed_core$faults(clock,reset,clear_faults,illegal,rejected_a,rejected
         illegal_reg$d = (illegal_reg$q & ~clear_faults) | illegal;
         overspeed_reg$d = (overspeed_reg$q & ~clear_faults) | rejected_a | rejected_b;
         revolution_reg$d = (revolution_reg$q & ~clear_faults) | rev_fault;
-        count_wide = count$q;
-        if (rejected_a & (count_wide != max)) begin
-            count_wide = count$q + one;
+        rejected = zero;
+        if (rejected_a ^ rejected_b ^ rejected_z) begin
+            rejected = one;
         end
-        ab = count_wide;
-        if (rejected_b & (count_wide != max)) begin
-            ab = count_wide + one;
+        if ((rejected_a & rejected_b) | (rejected_a & rejected_z) | (rejected_b & rejected_z)) begin
+            rejected = rejected | two;
         end
-        sum = ab;
-        if (rejected_z & (ab != max)) begin
-            sum = ab + one;
-        end
+        sum = count$q + rejected;
+        low_sum = (count$q & three) + rejected;
         count$d = sum;
+        if (((count$q | three) == max) & ((low_sum & four) != zero)) begin
+            count$d = max;
+        end
         if (reset) begin
             illegal_reg$d = 1'b0;
             overspeed_reg$d = 1'b0;
@@ -7428,8 +8078,8 @@ module encspeed_core$tag(clock,reset,start,position,nep,ndt,tag_position,tag_nep
     output reg  valid;
     
     // Constant declarations
-    localparam  first = 8'h7f;
-    localparam  one = 8'h1;
+    localparam  first = 9'b11111110;
+    localparam  one = 9'b1;
     
     // Stub signals
     reg  [31:0] req_position$d;
@@ -7456,8 +8106,8 @@ module encspeed_core$tag(clock,reset,start,position,nep,ndt,tag_position,tag_nep
     reg  running$d;
     wire  running$q;
     reg  running$clock;
-    reg  [7:0] remaining$d;
-    wire  [7:0] remaining$q;
+    reg  [8:0] remaining$d;
+    wire  [8:0] remaining$q;
     reg  remaining$clock;
     reg  [31:0] out_position$d;
     wire  [31:0] out_position$q;
@@ -7764,13 +8414,13 @@ endmodule // encspeed_core$tag$pending
 module encspeed_core$tag$remaining(d,q,clock);
     
     // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
+    input wire  [8:0] d;
+    output reg  [8:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 8'h0;
+       q = 9'h0;
     end
     
     always @(posedge clock) begin

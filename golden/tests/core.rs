@@ -12,12 +12,17 @@ const DT: u64 = 160;
 
 /// 1 MHz clock, 100 lines, dt = 160 cycles, 16-bit counters, timeout 50 dt.
 fn params() -> Params {
+    params_dt(DT)
+}
+
+/// As [`params`] with dt = `dt` cycles.
+fn params_dt(dt: u64) -> Params {
     Params::new(Spec {
         clock_hz: 1e6,
         lines: 100,
-        dt_cycles: DT,
+        dt_cycles: dt,
         counter_bits: 16,
-        timeout_s: 50.0 * DT as f64 / 1e6,
+        timeout_s: 50.0 * dt as f64 / 1e6,
     })
     .unwrap()
 }
@@ -285,17 +290,28 @@ fn index_resets_and_latches_the_position() {
 
 #[test]
 fn latencies_are_as_documented() {
-    // r = 0.5 (period 320, x1): every step restarts Table 1, so each A rising edge (B low)
-    // leads to exactly one speed_strobe, edge_to_speed_strobe edges later.
+    // r = 0.5 (period 2·dt, x1): every step restarts Table 1, so each A rising edge (B low)
+    // leads to exactly one speed_strobe, edge_to_speed_strobe edges later. dt = 480 is at
+    // least the calculator's min_lossless_dt (2·207 − 1 = 413 at N = 16, F = 16), so no
+    // update is replaced before it is computed.
+    const DT_LONG: u64 = 480;
+    const PERIOD: u64 = 2 * DT_LONG;
     for filter in [0u64, 1, 5] {
-        let p = params();
+        let p = params_dt(DT_LONG);
+        assert!(
+            DT_LONG
+                >= u64::from(golden::estimator::speed_calc::min_lossless_dt(
+                    16,
+                    p.speed_frac_bits()
+                ))
+        );
         let lat = Latency::new(&p, filter);
         let mut m = CoreModel::new(&p);
         let mut outs = vec![];
         let mut rises = vec![];
         let mut prev_a = false;
-        for k in 0..(20 * 320u64) {
-            let (a, b) = quad(k, 320, true);
+        for k in 0..(20 * PERIOD) {
+            let (a, b) = quad(k, PERIOD, true);
             if a && !prev_a && k > 3 {
                 rises.push(k as usize);
             }
@@ -304,7 +320,7 @@ fn latencies_are_as_documented() {
                 reset: k < 3,
                 enc_a: a,
                 enc_b: b,
-                cfg_dt: DT,
+                cfg_dt: DT_LONG,
                 cfg_filter: filter,
                 ..Default::default()
             }));

@@ -293,12 +293,13 @@ fn speeds_are_mode_scaled_by_the_latched_shift() {
 
 #[test]
 fn latency_is_fixed_by_hand() {
-    // N = 24, F = 16: S = 41 quotient bits; 1 edge to take the request, 3 × (1 set-up + 41
-    // steps) = 126, 1 edge to publish: 128 edges from the start edge to `valid`.
-    assert_eq!(latency_cycles(24, 16), 128);
-    // N = 8, F = 8: 3·17 + 5 = 56; N = 32, F = 24: 3·57 + 5 = 176.
-    assert_eq!(latency_cycles(8, 8), 56);
-    assert_eq!(latency_cycles(32, 24), 176);
+    // N = 24, F = 16: S = 41 quotient bits; 1 edge to take the request, 3 × (a set-up and
+    // 41 steps of two edges each) = 3 × 84 = 252, 2 edges to publish: 255 edges from the
+    // start edge to `valid`.
+    assert_eq!(latency_cycles(24, 16), 255);
+    // N = 8, F = 8: 1 + 3·(2 + 34) + 2 = 111; N = 32, F = 24: 1 + 3·(2 + 114) + 2 = 351.
+    assert_eq!(latency_cycles(8, 8), 111);
+    assert_eq!(latency_cycles(32, 24), 351);
     for (n, fb) in [(8, 0), (8, 8), (16, 16), (24, 16), (32, 24)] {
         let f = fmt(n, fb);
         let l = latency_cycles(n, fb) as usize;

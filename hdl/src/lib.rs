@@ -9,7 +9,7 @@
 //! | [`frontend`] | synchronisers, glitch filters, start-up hold, quadrature decoder, position counter |
 //! | [`estimator`] | time base, Rairán's Table 1 registers, request tag, n1/n2/n3 calculator, mode scaling, speed hold |
 //! | [`baselines`] | PC, ET and M/T counters and their speed calculator |
-//! | [`arith`] | the sequential divider |
+//! | [`arith`] | the division step, the sequential divider, the adder with a registered low half |
 //! | [`ecc`] | eccentricity correction (tables, δ of a span, corrected M/T and n3) and identification |
 //! | [`bus`] | Wishbone register files of the core and of the eccentricity window |
 //! | [`top`] | the shipped tops `encspeed_core`, `encspeed_wb`, `encspeed_ecc`, `encspeed_ecc_wb` and the fault flags |
@@ -36,6 +36,7 @@ pub mod top;
 pub mod verilog;
 
 pub use arith::seq_divider::{seq_divider_verilog, SeqDivider};
+pub use arith::two_cycle_adder::{two_cycle_adder_verilog, TwoCycleAdder};
 pub use baselines::baseline_speeds::{baseline_speeds_verilog, BaselineSpeeds};
 pub use baselines::et_timer::{et_timer_verilog, EtTimer};
 pub use baselines::mt_counter::{mt_counter_verilog, MtCounter};

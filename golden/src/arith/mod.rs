@@ -4,3 +4,4 @@
 pub mod div_step;
 pub mod latest_request;
 pub mod seq_divider;
+pub mod two_cycle_adder;

@@ -57,7 +57,7 @@
 //!   request that has not begun): the calculator always ends up computing the values of
 //!   the **last** start.
 //! * At the first edge at which the calculator is idle and a request is pending, it takes the
-//!   request and begins. [`latency_cycles`]`(N, F)` = 3·(N + F + 1) + 5 edges after the start
+//!   request and begins. [`latency_cycles`]`(N, F)` = 6·(N + F + 1) + 9 edges after the start
 //!   edge (for a start while idle), the three outputs change together and `valid` is high for
 //!   one cycle. The outputs are registers, held until the next `valid`.
 //! * `busy` is high while a computation runs or a request is pending; it is low in the
@@ -101,10 +101,12 @@ pub const fn product_bits(counter_bits: u32) -> u32 {
 }
 
 /// Clock edges from the edge that samples a `start` (calculator idle) to the edge after
-/// which `valid` is high: 3·(N + F + 1) + 5 (one edge to take the request, then per division
-/// one set-up edge and N + F + 1 quotient bits, then one edge to publish).
+/// which `valid` is high: 6·(N + F + 1) + 9 (one edge to take the request, then per division
+/// a set-up and N + F + 1 quotient bits, then the publication; each of these but the first
+/// takes two edges, because the hardware's wide additions are split over two cycles to meet
+/// its clock: 1 + 3·(2 + 2·(N + F + 1)) + 2).
 pub const fn latency_cycles(counter_bits: u32, frac_bits: u32) -> u32 {
-    3 * speed_bits(counter_bits, frac_bits) + 5
+    6 * speed_bits(counter_bits, frac_bits) + 9
 }
 
 /// Shortest dt (clock cycles) at which no `update` of the core is ever replaced before it is
@@ -482,8 +484,9 @@ mod tests {
     fn widths_and_latency() {
         assert_eq!(speed_bits(24, 16), 41);
         assert_eq!(product_bits(24), 49);
-        assert_eq!(latency_cycles(24, 16), 128);
-        assert_eq!(min_lossless_dt(24, 16), 255);
+        // By hand: S = 41, 1 + 3·(2 + 2·41) + 2 = 255; 2·255 − 1 = 509.
+        assert_eq!(latency_cycles(24, 16), 255);
+        assert_eq!(min_lossless_dt(24, 16), 509);
         assert_eq!(speed_lsb_error(16), 1.0 / 131_072.0);
     }
 

@@ -3,3 +3,4 @@
 
 pub mod div_step;
 pub mod seq_divider;
+pub mod two_cycle_adder;

@@ -47,7 +47,7 @@
 //! # Timing
 //!
 //! A `start` sampled at edge k while idle gives `valid` after edge k + L, with
-//! L = 3·(N + F + 1) + 5 ([`golden::estimator::speed_calc::latency_cycles`]; 128 for N = 24, F = 16),
+//! L = 6·(N + F + 1) + 9 ([`golden::estimator::speed_calc::latency_cycles`]; 255 for N = 24, F = 16),
 //! whatever the operands. `busy` is high after edges k … k + L − 1. A `start` while busy
 //! latches its inputs into the one-deep request register (replacing a request that has not
 //! begun) and is served at the edge after the current `valid`, so the values of the last
@@ -56,9 +56,14 @@
 //!
 //! # Datapath
 //!
-//! Schedule after a request is taken (edge k + 1): one set-up edge and S = N + F + 1
-//! divider steps for each of n1, n2 and n3, then one edge that publishes. The state
-//! register walks IDLE → SETUP → STEP ×S → SETUP → … → FINISH → IDLE.
+//! Schedule after a request is taken (edge k + 1): a set-up and S = N + F + 1 divider
+//! steps for each of n1, n2 and n3, then the publication. The state register walks
+//! IDLE → SETUP → STEP ×S → SETUP → … → FINISH → IDLE, and every state but IDLE lasts two
+//! cycles (`second`): each wide addition is a [`TwoCycleAdder`](crate::TwoCycleAdder),
+//! whose low half is registered in the first cycle and whose high half and carry out are
+//! ready in the second, so no path crosses more than about half a carry chain
+//! (L = 1 + 3·(2 + 2S) + 2). The operands of each addition are registers that change only
+//! at the second cycle's edge.
 //!
 //! * **Divider** (restoring, radix 2, shared by the three divisions). For num/den with
 //!   num < den·2^N, the partial remainder R is preloaded with num >> N (< den), the low N
@@ -72,13 +77,16 @@
 //!   2·Nep·(Nep − 1) = Nep·(X − 1), where X − 1 is X with bit 0 cleared: both accumulate
 //!   over the bits of the same X, the first skipping bit 0. Both products fit P bits.
 //! * **Selection**: n2 and n3 use the high-speed forms when Nep ≥ 2·Ndt (compared as
-//!   2·Ndt ≤ Nep in P bits), else (Nep, Ndt + 1) and (2·Nep, 2·Ndt + 1).
+//!   Ndt ≤ ⌊Nep/2⌋ at N bits and registered when the request is taken, so that the set-up's
+//!   operand (Nep − 1 or Ndt + 1) is the only carry chain before the divider's registers),
+//!   else (Nep, Ndt + 1) and (2·Nep, 2·Ndt + 1).
 //!
 //! Widths never change inside an expression (rust-hdl emits literals 32 bits wide and
 //! casts as masks that Verilator flags), so the N-bit request is widened to P bits by a
 //! shift-in loop (wires after synthesis) and every constant is a `Constant` of its
-//! operand's width. The divider's step is [`DivStep`](crate::arith::div_step::DivStep)
-//! (shifted ≥ den read off the borrow of the one subtraction it needs).
+//! operand's width. The divider's step is the restoring step of
+//! [`golden::arith::div_step::div_step`]: 2R + b − den computed as 2R + b + ~den + 1 on the
+//! two-cycle adder, whose carry out is "2R + b ≥ den" (no comparator), or R's top bit.
 //!
 //! # Rounding, mode scaling and sign in one adder
 //!
@@ -96,16 +104,15 @@
 //!
 //! # Resources
 //!
-//! Registers: the request (2N + 4), its working copy (2P + 3, of which the zero top bits
-//! are constant), the divider (3P + S), the multiplier (3P), staging and outputs (5S), a
-//! 6-bit step counter and 8 control bits. For N = 24, F = 16, yosys 0.23 `synth_ice40`
-//! maps the block (as it sits in the generated `encspeed_core`) to 608 flip-flops, 867
-//! LUT4 and 278 carry cells: 75 LUT4 more than before the mode scaling moved in, against
-//! about 870 for the three scalers it replaced. The critical path of `encspeed_core` and
-//! `encspeed_wb` on the iCE40 HX8K is the divider's P-bit trial subtraction into the
-//! quotient and partial remainder: 49 carry cells, 10.5 ns of an 18 ns path, so no
-//! placement reaches 100 MHz until that subtraction is split over two cycles
-//! (docs/benchmarks.md).
+//! Registers: the request (2N + 4), its working copy (2N + 6), the divider (3P + S), the
+//! multiplier (3P), staging and outputs (5S), a 6-bit step counter, 9 control bits, and
+//! in the four two-cycle adders the low sums and the high operands (about 2P each for the
+//! divider and the multiplier, 2S for the rounding). For N = 24, F = 16, yosys 0.23
+//! `synth_ice40` maps the block (as it sits in the generated `encspeed_core`) to 826
+//! flip-flops, 914 LUT4 and 282 carry cells (608, 867 and 278 with one-cycle 49- and 41-bit
+//! additions). The split took the block off the critical path of `encspeed_wb` on the
+//! iCE40 HX8K: before, the divider's 49-bit trial subtraction was 10.5 ns of an 18 ns path
+//! (docs/design-decisions.md, "Timing closure on the iCE40").
 
 use rust_hdl::prelude::*;
 
@@ -159,9 +166,11 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     req_neg: DFF<Bit>,
     req_shift: DFF<Bits<2>>,
     pending: DFF<Bit>,
-    // Working copy of the request, widened to P bits.
-    w_nep: DFF<Bits<P>>,
-    w_ndt: DFF<Bits<P>>,
+    // Working copy of the request.
+    w_nep: DFF<Bits<N>>,
+    w_ndt: DFF<Bits<N>>,
+    /// Nep ≥ 2·Ndt (n1 ≥ 2): the high-speed forms of n2 and n3.
+    w_high: DFF<Bit>,
     w_neg: DFF<Bit>,
     w_shift: DFF<Bits<2>>,
     /// Nep = 0: all speeds 0.
@@ -172,6 +181,9 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     state: DFF<Bits<STATE_BITS>>,
     phase: DFF<Bits<STATE_BITS>>,
     count: DFF<Bits<COUNT_BITS>>,
+    /// The second cycle of a state: every state lasts two cycles, the first lets the
+    /// adders' registered low halves take their operands.
+    second: DFF<Bit>,
     /// The multiplier steps (the first N + 1 steps of the n1 division).
     mul_on: DFF<Bit>,
     // Divider.
@@ -191,17 +203,28 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     out_n3: DFF<Bits<S>>,
     valid_reg: DFF<Bit>,
     // Combinational.
-    req_nep_wide: Signal<Local, Bits<P>>,
-    req_ndt_wide: Signal<Local, Bits<P>>,
-    /// Nep ≥ 2·Ndt (n1 ≥ 2): the high-speed forms of n2 and n3.
-    high: Signal<Local, Bit>,
+    /// The working Nep and Ndt widened to P bits.
+    nep_wide: Signal<Local, Bits<P>>,
+    ndt_wide: Signal<Local, Bits<P>>,
     num_sel: Signal<Local, Bits<P>>,
     den_sel: Signal<Local, Bits<P>>,
-    /// One restoring division step at P bits.
-    div: crate::arith::div_step::DivStep<P>,
+    /// The divider's trial subtraction 2R + b − den (as 2R + b + ~den + 1), over two cycles.
+    div_sub: crate::arith::two_cycle_adder::TwoCycleAdder<P>,
+    /// 2R + b: the partial remainder shifted, with the numerator bit brought down.
+    shifted: Signal<Local, Bits<P>>,
+    shifted_msb: Signal<Local, Bit>,
+    den_msb: Signal<Local, Bit>,
+    diff_msb: Signal<Local, Bit>,
+    /// The quotient bit: R's top bit (the trial value's carry) or 2R + b ≥ den.
     fits: Signal<Local, Bit>,
     next_rem: Signal<Local, Bits<P>>,
     x_bit: Signal<Local, Bit>,
+    /// The multiplier's accumulations acc·2 + (Ndt or 0) and acc·2 + (Nep or 0), over two
+    /// cycles each.
+    mul_den: crate::arith::two_cycle_adder::TwoCycleAdder<P>,
+    mul_num: crate::arith::two_cycle_adder::TwoCycleAdder<P>,
+    /// The rounding, scaling and sign adder, over two cycles.
+    round_add: crate::arith::two_cycle_adder::TwoCycleAdder<S>,
     /// Quotient >> 1 (or a special value).
     half: Signal<Local, Bits<S>>,
     /// Quotient bit 0: the rounding increment.
@@ -214,6 +237,7 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     /// e or f (0 to 3).
     increment: Signal<Local, Bits<S>>,
     sum: Signal<Local, Bits<S>>,
+    sum_negative: Signal<Local, Bit>,
     /// The signed, scaled speed.
     rounded: Signal<Local, Bits<S>>,
     // Constants, each of the width it is used at.
@@ -293,6 +317,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             pending: Default::default(),
             w_nep: Default::default(),
             w_ndt: Default::default(),
+            w_high: Default::default(),
             w_neg: Default::default(),
             w_shift: Default::default(),
             w_nep_zero: Default::default(),
@@ -300,6 +325,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             state: Default::default(),
             phase: Default::default(),
             count: Default::default(),
+            second: Default::default(),
             mul_on: Default::default(),
             part_rem: Default::default(),
             num_shift: Default::default(),
@@ -314,15 +340,21 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             out_n2: Default::default(),
             out_n3: Default::default(),
             valid_reg: Default::default(),
-            req_nep_wide: Default::default(),
-            req_ndt_wide: Default::default(),
-            high: Default::default(),
+            nep_wide: Default::default(),
+            ndt_wide: Default::default(),
             num_sel: Default::default(),
             den_sel: Default::default(),
-            div: Default::default(),
+            div_sub: Default::default(),
+            shifted: Default::default(),
+            shifted_msb: Default::default(),
+            den_msb: Default::default(),
+            diff_msb: Default::default(),
             fits: Default::default(),
             next_rem: Default::default(),
             x_bit: Default::default(),
+            mul_den: Default::default(),
+            mul_num: Default::default(),
+            round_add: Default::default(),
             half: Default::default(),
             round_bit: Default::default(),
             by_two: Default::default(),
@@ -330,6 +362,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             addend: Default::default(),
             increment: Default::default(),
             sum: Default::default(),
+            sum_negative: Default::default(),
             rounded: Default::default(),
             n_zero: Constant::new(0.into()),
             p_zero: Constant::new(0.into()),
@@ -376,60 +409,88 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, req_nep, req_ndt, req_neg, req_shift, pending, w_nep, w_ndt, w_neg,
-            w_shift, w_nep_zero, w_ndt_zero, state, phase, count, mul_on, part_rem, num_shift, den,
-            quo, mul_x, acc_num, acc_den, stage_n1, stage_n2, out_n1, out_n2, out_n3, valid_reg
+            self, clock, req_nep, req_ndt, req_neg, req_shift, pending, w_nep, w_ndt, w_high,
+            w_neg, w_shift, w_nep_zero, w_ndt_zero, state, phase, count, second, mul_on, part_rem,
+            num_shift, den, quo, mul_x, acc_num, acc_den, stage_n1, stage_n2, out_n1, out_n2,
+            out_n3, valid_reg
         );
-        // Widen the request to P bits: shift its bits in at the top, LSB first, then move
-        // them down (a cast would be emitted as a mask of another width).
-        self.req_nep_wide.next = self.p_zero.val();
-        self.req_ndt_wide.next = self.p_zero.val();
+        clock!(self, clock, div_sub, mul_den, mul_num, round_add);
+        // Widen the working Nep and Ndt to P bits: shift their bits in at the top, LSB
+        // first, then move them down (a cast would be emitted as a mask of another width).
+        self.nep_wide.next = self.p_zero.val();
+        self.ndt_wide.next = self.p_zero.val();
         for i in 0..N {
-            if self.req_nep.q.val().get_bit(i) {
-                self.req_nep_wide.next =
-                    (self.req_nep_wide.val() >> self.sh_one.val()) | self.p_msb.val();
+            if self.w_nep.q.val().get_bit(i) {
+                self.nep_wide.next = (self.nep_wide.val() >> self.sh_one.val()) | self.p_msb.val();
             } else {
-                self.req_nep_wide.next = self.req_nep_wide.val() >> self.sh_one.val();
+                self.nep_wide.next = self.nep_wide.val() >> self.sh_one.val();
             }
-            if self.req_ndt.q.val().get_bit(i) {
-                self.req_ndt_wide.next =
-                    (self.req_ndt_wide.val() >> self.sh_one.val()) | self.p_msb.val();
+            if self.w_ndt.q.val().get_bit(i) {
+                self.ndt_wide.next = (self.ndt_wide.val() >> self.sh_one.val()) | self.p_msb.val();
             } else {
-                self.req_ndt_wide.next = self.req_ndt_wide.val() >> self.sh_one.val();
+                self.ndt_wide.next = self.ndt_wide.val() >> self.sh_one.val();
             }
         }
-        self.req_nep_wide.next = self.req_nep_wide.val() >> self.sh_low.val();
-        self.req_ndt_wide.next = self.req_ndt_wide.val() >> self.sh_low.val();
+        self.nep_wide.next = self.nep_wide.val() >> self.sh_low.val();
+        self.ndt_wide.next = self.ndt_wide.val() >> self.sh_low.val();
 
-        // Operands of the next division.
-        self.high.next = (self.w_ndt.q.val() << self.sh_one.val()) <= self.w_nep.q.val();
-        self.num_sel.next = self.w_nep.q.val();
-        self.den_sel.next = self.w_ndt.q.val();
+        // Operands of the next division (one carry chain at most: the high-speed test was
+        // registered when the request was taken).
+        self.num_sel.next = self.nep_wide.val();
+        self.den_sel.next = self.ndt_wide.val();
         if self.phase.q.val() == self.ph_two.val() {
-            if self.high.val() {
-                self.num_sel.next = self.w_nep.q.val() - self.p_one.val();
+            if self.w_high.q.val() {
+                self.num_sel.next = self.nep_wide.val() - self.p_one.val();
             } else {
-                self.den_sel.next = self.w_ndt.q.val() + self.p_one.val();
+                self.den_sel.next = self.ndt_wide.val() + self.p_one.val();
             }
         }
         if self.phase.q.val() == self.ph_three.val() {
-            if self.high.val() {
+            if self.w_high.q.val() {
                 self.num_sel.next = self.acc_num.q.val();
                 self.den_sel.next = self.acc_den.q.val();
             } else {
-                self.num_sel.next = self.w_nep.q.val() << self.sh_one.val();
-                self.den_sel.next = (self.w_ndt.q.val() << self.sh_one.val()) | self.p_one.val();
+                self.num_sel.next = self.nep_wide.val() << self.sh_one.val();
+                self.den_sel.next = (self.ndt_wide.val() << self.sh_one.val()) | self.p_one.val();
             }
         }
 
-        // One restoring division step (DivStep): bring down the next numerator bit,
-        // subtract if 2R + b ≥ den.
-        self.div.rem.next = self.part_rem.q.val();
-        self.div.bit_in.next = (self.num_shift.q.val() & self.p_msb.val()) != self.p_zero.val();
-        self.div.den.next = self.den.q.val();
-        self.fits.next = self.div.fits.val();
-        self.next_rem.next = self.div.next_rem.val();
+        // One restoring division step over two cycles: bring down the next numerator bit,
+        // subtract if 2R + b ≥ den. The subtraction is 2R + b + ~den + 1, whose carry out
+        // (read off the operands' and the sum's top bits) is "no borrow". The operands are
+        // registers held for the step's two cycles, so in the second the sum is theirs.
+        self.shifted.next = self.part_rem.q.val() << self.sh_one.val();
+        if (self.num_shift.q.val() & self.p_msb.val()) != self.p_zero.val() {
+            self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.p_one.val();
+        }
+        self.div_sub.a.next = self.shifted.val();
+        self.div_sub.b.next = !self.den.q.val();
+        self.div_sub.carry_in.next = true;
+        self.shifted_msb.next = (self.shifted.val() & self.p_msb.val()) != self.p_zero.val();
+        self.den_msb.next = (self.den.q.val() & self.p_msb.val()) != self.p_zero.val();
+        self.diff_msb.next = (self.div_sub.sum.val() & self.p_msb.val()) != self.p_zero.val();
+        self.fits.next = ((self.part_rem.q.val() & self.p_msb.val()) != self.p_zero.val())
+            | (self.shifted_msb.val() & !self.den_msb.val())
+            | ((self.shifted_msb.val() | !self.den_msb.val()) & !self.diff_msb.val());
+        self.next_rem.next = self.shifted.val();
+        if self.fits.val() {
+            self.next_rem.next = self.div_sub.sum.val();
+        }
+
+        // The multiplier's two accumulations, acc·2 + (operand if the bit of X is 1).
         self.x_bit.next = (self.mul_x.q.val() & self.p_x_msb.val()) != self.p_zero.val();
+        self.mul_den.a.next = self.acc_den.q.val() << self.sh_one.val();
+        self.mul_den.b.next = self.p_zero.val();
+        self.mul_den.carry_in.next = false;
+        self.mul_num.a.next = self.acc_num.q.val() << self.sh_one.val();
+        self.mul_num.b.next = self.p_zero.val();
+        self.mul_num.carry_in.next = false;
+        if self.x_bit.val() {
+            self.mul_den.b.next = self.ndt_wide.val();
+            if self.count.q.val() != self.count_mul_last.val() {
+                self.mul_num.b.next = self.nep_wide.val();
+            }
+        }
 
         // Round, mode-scale and sign with one adder (module docs): (h or ~h) + (e or f),
         // then an arithmetic shift by s. With q the last quotient, h = q >> 1 and r = q & 1;
@@ -479,34 +540,48 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
                 }
             }
         }
-        self.sum.next = self.addend.val() + self.increment.val();
+        self.round_add.a.next = self.addend.val();
+        self.round_add.b.next = self.increment.val();
+        self.round_add.carry_in.next = false;
+        self.sum.next = self.round_add.sum.val();
+        self.sum_negative.next =
+            self.w_neg.q.val() & ((self.sum.val() & self.s_msb.val()) != self.s_zero.val());
         self.rounded.next = self.sum.val();
         if self.by_two.val() {
             self.rounded.next = self.sum.val() >> self.sh_one.val();
-            if self.w_neg.q.val() & ((self.sum.val() & self.s_msb.val()) != self.s_zero.val()) {
+            if self.sum_negative.val() {
                 self.rounded.next = (self.sum.val() >> self.sh_one.val()) | self.s_msb.val();
             }
         }
         if self.by_four.val() {
             self.rounded.next = self.sum.val() >> self.sh_two.val();
-            if self.w_neg.q.val() & ((self.sum.val() & self.s_msb.val()) != self.s_zero.val()) {
+            if self.sum_negative.val() {
                 self.rounded.next = (self.sum.val() >> self.sh_two.val()) | self.s_fill_two.val();
             }
         }
 
         self.valid_reg.d.next = false;
         if (self.state.q.val() == self.st_idle.val()) & self.pending.q.val() {
-            self.w_nep.d.next = self.req_nep_wide.val();
-            self.w_ndt.d.next = self.req_ndt_wide.val();
+            self.w_nep.d.next = self.req_nep.q.val();
+            self.w_ndt.d.next = self.req_ndt.q.val();
+            // 2·Ndt ≤ Nep ⇔ Ndt ≤ ⌊Nep/2⌋, at N bits.
+            self.w_high.d.next =
+                self.req_ndt.q.val() <= (self.req_nep.q.val() >> self.sh_one.val());
             self.w_neg.d.next = self.req_neg.q.val();
             self.w_shift.d.next = self.req_shift.q.val();
             self.w_nep_zero.d.next = self.req_nep.q.val() == self.n_zero.val();
             self.w_ndt_zero.d.next = self.req_ndt.q.val() == self.n_zero.val();
             self.pending.d.next = false;
             self.phase.d.next = self.ph_one.val();
+            self.second.d.next = false;
             self.state.d.next = self.st_setup.val();
         }
-        if self.state.q.val() == self.st_setup.val() {
+        // Every other state lasts two cycles: its first only lets the adders' low halves
+        // take their (held) operands, its second acts.
+        if self.state.q.val() != self.st_idle.val() {
+            self.second.d.next = !self.second.q.val();
+        }
+        if (self.state.q.val() == self.st_setup.val()) & self.second.q.val() {
             self.part_rem.d.next = self.num_sel.val() >> self.sh_n.val();
             self.num_shift.d.next = self.num_sel.val() << self.sh_low.val();
             self.den.d.next = self.den_sel.val();
@@ -514,7 +589,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.count.d.next = self.count_first.val();
             self.state.d.next = self.st_step.val();
             if self.phase.q.val() == self.ph_one.val() {
-                self.mul_x.d.next = (self.w_nep.q.val() << self.sh_one.val()) - self.p_one.val();
+                self.mul_x.d.next = (self.nep_wide.val() << self.sh_one.val()) - self.p_one.val();
                 self.acc_num.d.next = self.p_zero.val();
                 self.acc_den.d.next = self.p_zero.val();
                 self.mul_on.d.next = true;
@@ -526,7 +601,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
                 self.stage_n2.d.next = self.rounded.val();
             }
         }
-        if self.state.q.val() == self.st_step.val() {
+        if (self.state.q.val() == self.st_step.val()) & self.second.q.val() {
             self.part_rem.d.next = self.next_rem.val();
             self.num_shift.d.next = self.num_shift.q.val() << self.sh_one.val();
             self.quo.d.next = self.quo.q.val() << self.sh_one.val();
@@ -536,16 +611,8 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.count.d.next = self.count.q.val() - self.count_one.val();
             if self.mul_on.q.val() {
                 self.mul_x.d.next = self.mul_x.q.val() << self.sh_one.val();
-                self.acc_num.d.next = self.acc_num.q.val() << self.sh_one.val();
-                self.acc_den.d.next = self.acc_den.q.val() << self.sh_one.val();
-                if self.x_bit.val() {
-                    self.acc_den.d.next =
-                        (self.acc_den.q.val() << self.sh_one.val()) + self.w_ndt.q.val();
-                    if self.count.q.val() != self.count_mul_last.val() {
-                        self.acc_num.d.next =
-                            (self.acc_num.q.val() << self.sh_one.val()) + self.w_nep.q.val();
-                    }
-                }
+                self.acc_num.d.next = self.mul_num.sum.val();
+                self.acc_den.d.next = self.mul_den.sum.val();
                 if self.count.q.val() == self.count_mul_last.val() {
                     self.mul_on.d.next = false;
                 }
@@ -558,7 +625,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
                 }
             }
         }
-        if self.state.q.val() == self.st_finish.val() {
+        if (self.state.q.val() == self.st_finish.val()) & self.second.q.val() {
             self.out_n1.d.next = self.stage_n1.q.val();
             self.out_n2.d.next = self.stage_n2.q.val();
             self.out_n3.d.next = self.rounded.val();
@@ -575,6 +642,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         if self.reset.val() {
             self.pending.d.next = false;
             self.mul_on.d.next = false;
+            self.second.d.next = false;
             self.state.d.next = self.st_idle.val();
             self.valid_reg.d.next = false;
             self.out_n1.d.next = self.s_zero.val();
@@ -615,12 +683,13 @@ mod tests {
     }
 
     #[test]
-    fn n3_of_4_over_1_by_hand_in_128_cycles() {
+    fn n3_of_4_over_1_by_hand_in_255_cycles() {
         let mut uut = Calc::default();
         uut.connect_all();
         step(&mut uut, true, 4, 1, false);
-        // Busy after edges 0 (the start) to 127, valid after edge 128.
-        for k in 1..=128 {
+        // L = 1 + 3·(2 + 2·41) + 2 = 255: busy after edges 0 (the start) to 254, valid after
+        // edge 255.
+        for k in 1..=255 {
             assert!(uut.busy.val() && !uut.valid.val(), "after edge {}", k - 1);
             step(&mut uut, false, 0, 0, false);
         }

@@ -24,6 +24,9 @@ use golden::params::POSITION_BITS;
 use rust_hdl::prelude::*;
 
 const C: usize = POSITION_BITS as usize;
+/// Width of the countdown: latencies up to 511 (the calculator's longest, at N = 32 and
+/// F = 24, is 6·57 + 9 = 351).
+const REMAINING_BITS: usize = 9;
 
 /// The request tag of a speed calculator of `latency` edges with N-bit Nep1/Ndt1.
 #[derive(LogicBlock)]
@@ -56,21 +59,21 @@ pub struct SpeedTag<const N: usize> {
     act_nep: DFF<Bits<N>>,
     act_ndt: DFF<Bits<N>>,
     running: DFF<Bit>,
-    remaining: DFF<Bits<8>>,
+    remaining: DFF<Bits<REMAINING_BITS>>,
     out_position: DFF<Bits<C>>,
     out_nep: DFF<Bits<N>>,
     out_ndt: DFF<Bits<N>>,
     out_valid: DFF<Bit>,
-    first: Constant<Bits<8>>,
-    one: Constant<Bits<8>>,
+    first: Constant<Bits<REMAINING_BITS>>,
+    one: Constant<Bits<REMAINING_BITS>>,
 }
 
 impl<const N: usize> SpeedTag<N> {
-    /// A tag for a calculator publishing `latency` edges after a start (2..=255).
+    /// A tag for a calculator publishing `latency` edges after a start (2..=511).
     pub fn new(latency: u32) -> Self {
         assert!(
-            (2..=255).contains(&latency),
-            "latency {latency} outside 2..=255"
+            (2..=511).contains(&latency),
+            "latency {latency} outside 2..=511"
         );
         Self {
             clock: Default::default(),

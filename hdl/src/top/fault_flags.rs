@@ -44,11 +44,17 @@ pub struct FaultFlags {
     overspeed_reg: DFF<Bit>,
     revolution_reg: DFF<Bit>,
     count: DFF<Bits<G>>,
-    count_wide: Signal<Local, Bits<G>>,
+    /// Rejected pulses this cycle, 0..=3.
+    rejected: Signal<Local, Bits<G>>,
+    /// count + rejected (one carry chain).
     sum: Signal<Local, Bits<G>>,
-    ab: Signal<Local, Bits<G>>,
+    /// The low two bits of count plus rejected: bit 2 is their carry.
+    low_sum: Signal<Local, Bits<G>>,
     zero: Constant<Bits<G>>,
     one: Constant<Bits<G>>,
+    two: Constant<Bits<G>>,
+    three: Constant<Bits<G>>,
+    four: Constant<Bits<G>>,
     max: Constant<Bits<G>>,
 }
 
@@ -71,11 +77,14 @@ impl Default for FaultFlags {
             overspeed_reg: Default::default(),
             revolution_reg: Default::default(),
             count: Default::default(),
-            count_wide: Default::default(),
+            rejected: Default::default(),
             sum: Default::default(),
-            ab: Default::default(),
+            low_sum: Default::default(),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
+            two: Constant::new(2.into()),
+            three: Constant::new(3.into()),
+            four: Constant::new(4.into()),
             max: Constant::new(((1u64 << G) - 1).into()),
         }
     }
@@ -99,20 +108,28 @@ impl Logic for FaultFlags {
             | self.rejected_b.val();
         self.revolution_reg.d.next =
             (self.revolution_reg.q.val() & !self.clear_faults.val()) | self.rev_fault.val();
-        // Saturating add of 0..3, one increment at a time so that no sum can wrap.
-        self.count_wide.next = self.count.q.val();
-        if self.rejected_a.val() & (self.count_wide.val() != self.max.val()) {
-            self.count_wide.next = self.count.q.val() + self.one.val();
+        // Saturating add of 0..=3 with one carry chain: count + k exceeds the maximum
+        // (all ones) exactly when count's bits above bit 1 are all ones and its low two bits
+        // plus k carry out of bit 1 (k ≤ 3). (Three incrementers in series, each with its
+        // own saturation test, were the core's critical path at 100 MHz.)
+        self.rejected.next = self.zero.val();
+        if self.rejected_a.val() ^ self.rejected_b.val() ^ self.rejected_z.val() {
+            self.rejected.next = self.one.val();
         }
-        self.ab.next = self.count_wide.val();
-        if self.rejected_b.val() & (self.count_wide.val() != self.max.val()) {
-            self.ab.next = self.count_wide.val() + self.one.val();
+        if (self.rejected_a.val() & self.rejected_b.val())
+            | (self.rejected_a.val() & self.rejected_z.val())
+            | (self.rejected_b.val() & self.rejected_z.val())
+        {
+            self.rejected.next = self.rejected.val() | self.two.val();
         }
-        self.sum.next = self.ab.val();
-        if self.rejected_z.val() & (self.ab.val() != self.max.val()) {
-            self.sum.next = self.ab.val() + self.one.val();
-        }
+        self.sum.next = self.count.q.val() + self.rejected.val();
+        self.low_sum.next = (self.count.q.val() & self.three.val()) + self.rejected.val();
         self.count.d.next = self.sum.val();
+        if ((self.count.q.val() | self.three.val()) == self.max.val())
+            & ((self.low_sum.val() & self.four.val()) != self.zero.val())
+        {
+            self.count.d.next = self.max.val();
+        }
         if self.reset.val() {
             self.illegal_reg.d.next = false;
             self.overspeed_reg.d.next = false;
@@ -183,6 +200,36 @@ mod tests {
             );
             assert_eq!(got, *want, "row {k}");
         }
+    }
+
+    /// The count saturates at 2^16 − 1 = 65535 whatever the number of rejections in the
+    /// cycle that reaches it: 21 844 cycles of three give 65 532, two more give 65 534,
+    /// three more would be 65 537 and give 65 535, and it stays there.
+    #[test]
+    fn the_glitch_count_saturates() {
+        let mut uut = FaultFlags::default();
+        uut.connect_all();
+        let edge = |uut: &mut FaultFlags, reset: bool, rejected: [bool; 3]| {
+            uut.reset.next = reset;
+            uut.rejected_a.next = rejected[0];
+            uut.rejected_b.next = rejected[1];
+            uut.rejected_z.next = rejected[2];
+            uut.clock.next = Clock { clk: false };
+            assert!(simulate(uut, 10));
+            uut.clock.next = Clock { clk: true };
+            assert!(simulate(uut, 10));
+            uut.glitch_count.val().to_u64()
+        };
+        edge(&mut uut, true, [false; 3]);
+        for _ in 0..21_844 {
+            edge(&mut uut, false, [true; 3]);
+        }
+        assert_eq!(uut.glitch_count.val().to_u64(), 65_532);
+        assert_eq!(edge(&mut uut, false, [false, true, true]), 65_534);
+        assert_eq!(edge(&mut uut, false, [true; 3]), 65_535);
+        assert_eq!(edge(&mut uut, false, [true, false, false]), 65_535);
+        assert_eq!(edge(&mut uut, false, [false; 3]), 65_535);
+        assert_eq!(edge(&mut uut, true, [true; 3]), 0);
     }
 
     #[test]

@@ -7,3 +7,4 @@
 mod common;
 
 mod seq_divider;
+mod two_cycle_adder;
