@@ -113,9 +113,12 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     localparam  shift_zero = 2'b0;
     localparam  shift_one = 2'b1;
     localparam  shift_two = 2'b10;
-    localparam  lines_x1 = 32'h400;
-    localparam  lines_x2 = 32'h800;
-    localparam  lines_x4 = 32'h1000;
+    localparam  limit_x1 = 32'h3ff;
+    localparam  limit_x2 = 32'h7ff;
+    localparam  limit_x4 = 32'hfff;
+    localparam  limit_less_one_x1 = 32'h3fe;
+    localparam  limit_less_one_x2 = 32'h7fe;
+    localparam  limit_less_one_x4 = 32'hffe;
     
     // Stub signals
     reg  sync_a$clock;
@@ -172,7 +175,8 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     reg  counter$step;
     reg  counter$forward;
     reg  counter$z;
-    reg  [31:0] counter$counts_per_rev;
+    reg  [31:0] counter$limit;
+    reg  [31:0] counter$limit_less_one;
     reg  [1:0] counter$cfg_z_mode;
     wire  [31:0] counter$position;
     wire  [31:0] counter$z_latch;
@@ -339,7 +343,8 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     reg  engine_reset;
     reg  [23:0] dt_eff;
     reg  [1:0] shift;
-    reg  [31:0] counts_per_rev;
+    reg  [31:0] limit;
+    reg  [31:0] limit_less_one;
     
     // Sub module instances
     encspeed_core$sync_a sync_a(
@@ -413,7 +418,8 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         .step(counter$step),
         .forward(counter$forward),
         .z(counter$z),
-        .counts_per_rev(counter$counts_per_rev),
+        .limit(counter$limit),
+        .limit_less_one(counter$limit_less_one),
         .cfg_z_mode(counter$cfg_z_mode),
         .position(counter$position),
         .z_latch(counter$z_latch),
@@ -680,14 +686,17 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         end
         cfg_error_reg$d = (cfg_dt == n_one) | (cfg_mode == mode_invalid);
         shift = shift_two;
-        counts_per_rev = lines_x4;
+        limit = limit_x4;
+        limit_less_one = limit_less_one_x4;
         if (cfg_mode == mode_x1) begin
             shift = shift_zero;
-            counts_per_rev = lines_x1;
+            limit = limit_x1;
+            limit_less_one = limit_less_one_x1;
         end
         else if (cfg_mode == mode_x2) begin
             shift = shift_one;
-            counts_per_rev = lines_x2;
+            limit = limit_x2;
+            limit_less_one = limit_less_one_x2;
         end
         sync_a$reset = rst;
         sync_b$reset = rst;
@@ -715,7 +724,8 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         counter$step = decoder$step;
         counter$forward = decoder$forward;
         counter$z = filter_z$level_out;
-        counter$counts_per_rev = counts_per_rev;
+        counter$limit = limit;
+        counter$limit_less_one = limit_less_one;
         counter$cfg_z_mode = cfg_z_mode;
         first_step = decoder$step & (~have_dir$q | (decoder$forward ^ last_dir$q));
         engine_reset = rst | first_step;
@@ -4489,7 +4499,7 @@ module encspeed_core$cfg_error_reg(d,q,clock);
 endmodule // encspeed_core$cfg_error_reg
 
 
-module encspeed_core$counter(clock,reset,step,forward,z,counts_per_rev,cfg_z_mode,position,z_latch,index,rev_error,rev_error_count,rev_fault);
+module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg_z_mode,position,z_latch,index,rev_error,rev_error_count,rev_fault);
     
     // Module arguments
     input wire  clock;
@@ -4497,7 +4507,8 @@ module encspeed_core$counter(clock,reset,step,forward,z,counts_per_rev,cfg_z_mod
     input wire  step;
     input wire  forward;
     input wire  z;
-    input wire  [31:0] counts_per_rev;
+    input wire  [31:0] limit;
+    input wire  [31:0] limit_less_one;
     input wire  [1:0] cfg_z_mode;
     output reg  [31:0] position;
     output reg  [31:0] z_latch;
@@ -4563,7 +4574,7 @@ module encspeed_core$counter(clock,reset,step,forward,z,counts_per_rev,cfg_z_mod
     reg  fault_reg$clock;
     
     // Local signals
-    reg  [31:0] limit;
+    reg  count_is_rev;
     reg  [31:0] stepped;
     reg  rise;
     reg  any_now;
@@ -4675,7 +4686,6 @@ module encspeed_core$counter(clock,reset,step,forward,z,counts_per_rev,cfg_z_mod
         error_reg$d = error_reg$q;
         error_count$d = error_count$q;
         fault_reg$d = fault_reg$q;
-        limit = counts_per_rev - pos_one;
         rise = z_delay$q & ~z_prev$q;
         z_delay$d = z;
         z_prev$d = z_delay$q;
@@ -4721,7 +4731,18 @@ module encspeed_core$counter(clock,reset,step,forward,z,counts_per_rev,cfg_z_mod
                 mixed_now = 1'b0;
             end
         end
-        bad = armed$q & (cfg_z_mode != mode_ignore) & any_now & ~mixed_now & (over_now | (more_now != limit));
+        count_is_rev = rev_more$q == limit;
+        if (step) begin
+            if (rev_any$q) begin
+                if (rev_more$q != pos_max) begin
+                    count_is_rev = rev_more$q == limit_less_one;
+                end
+            end
+            else begin
+                count_is_rev = limit == pos_zero;
+            end
+        end
+        bad = armed$q & (cfg_z_mode != mode_ignore) & any_now & ~mixed_now & (over_now | ~count_is_rev);
         position_reg$d = stepped;
         index_reg$d = rise;
         fault_reg$d = 1'b0;

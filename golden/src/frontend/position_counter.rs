@@ -72,6 +72,21 @@ pub struct CounterState {
     pub rev_fault: bool,
 }
 
+/// The two constants the hardware block takes for counts per revolution `counts_per_rev`
+/// (0 standing for 2^C) at C = `position_bits`: limit = R − 1 and R − 2, both mod 2^C. The
+/// block compares with them instead of subtracting from R in the cycle.
+pub fn limits(counts_per_rev: u64, position_bits: u32) -> (u64, u64) {
+    let mask = if position_bits >= 64 {
+        u64::MAX
+    } else {
+        (1u64 << position_bits) - 1
+    };
+    (
+        counts_per_rev.wrapping_sub(1) & mask,
+        counts_per_rev.wrapping_sub(2) & mask,
+    )
+}
+
 /// Position modulo the counts per revolution, index reset/latch and revolution check.
 ///
 /// Per edge (R = `counts_per_rev`, with 0 meaning 2^C; limit = R − 1):

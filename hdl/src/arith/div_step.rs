@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! One step of restoring radix-2 division at W bits, combinational: the arithmetic every
-//! divider of the IP repeats once per quotient bit (`SeqDivider`, `SpeedCalc`,
-//! `BaselineSpeeds`, `EccMtSpeed`; each keeps its own schedule and registers). Bit-true
-//! model: [`golden::arith::div_step::div_step`].
+//! divider of the IP repeats once per quotient bit (`SeqDivider`, `BaselineSpeeds`,
+//! `EccMtSpeed`; each keeps its own schedule and registers; `SpeedCalc` does the same step
+//! over two cycles on a `TwoCycleAdder`). Bit-true model:
+//! [`golden::arith::div_step::div_step`].
 //!
 //! With partial remainder `rem` (R) and the bit `bit_in` (b) brought down, the trial value
 //! 2R + b has W + 1 bits: its top bit is R's most significant bit (the carry), its low W

@@ -3,7 +3,8 @@
 //! check of the count of every revolution. Bit-true model:
 //! [`golden::frontend::PositionCounter`].
 //!
-//! Per clock edge (R = `counts_per_rev`, 0 standing for 2^C; limit = R − 1 in C bits):
+//! Per clock edge (R = counts per revolution, 2^C allowed; the ports carry limit = R − 1
+//! and R − 2, both mod 2^C, which the core has as constants for each decoding mode):
 //! 1. Index: rise = z_delay ∧ ¬z_prev, where z_delay is `z` one edge ago and z_prev two. The
 //!    extra delay matches the decoder's latency: `z` is taken in the timing of the decoder's
 //!    `a`/`b` inputs, so the index edge and the step of the same encoder transition are
@@ -25,7 +26,7 @@
 //!    R steps, because the index rises on entering the Z window from either side.
 //!
 //! Ports: `step`, `forward` (from the decoder), `z` (filtered index level, one cycle ahead
-//! of `step`), `counts_per_rev[C-1:0]`, `cfg_z_mode[1:0]` (0 ignore, 1 reset, 2 latch,
+//! of `step`), `limit[C-1:0]` (R − 1), `limit_less_one[C-1:0]` (R − 2), `cfg_z_mode[1:0]` (0 ignore, 1 reset, 2 latch,
 //! 3 latch then reset). Registered outputs: `position[C-1:0]`, `z_latch[C-1:0]`, `index`
 //! (one cycle per index edge processed), `rev_error` (sticky), `rev_error_count[G-1:0]`.
 //!
@@ -48,8 +49,10 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     pub forward: Signal<In, Bit>,
     /// Filtered index level, in the timing of the decoder's inputs.
     pub z: Signal<In, Bit>,
-    /// Counts per revolution R (0 stands for 2^C).
-    pub counts_per_rev: Signal<In, Bits<C>>,
+    /// R − 1 mod 2^C, R the counts per revolution (2^C − 1 for R = 2^C).
+    pub limit: Signal<In, Bits<C>>,
+    /// R − 2 mod 2^C (the core feeds both as constants: no subtraction in the block).
+    pub limit_less_one: Signal<In, Bits<C>>,
     /// 0 ignore Z, 1 reset on Z, 2 latch on Z, 3 latch then reset.
     pub cfg_z_mode: Signal<In, Bits<2>>,
     /// Position, 0..R.
@@ -78,7 +81,8 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     error_reg: DFF<Bit>,
     error_count: DFF<Bits<G>>,
     fault_reg: DFF<Bit>,
-    limit: Signal<Local, Bits<C>>,
+    /// The interval's count equals R (more_now = limit), found without forming more_now.
+    count_is_rev: Signal<Local, Bit>,
     stepped: Signal<Local, Bits<C>>,
     rise: Signal<Local, Bit>,
     any_now: Signal<Local, Bit>,
@@ -112,7 +116,8 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             step: Default::default(),
             forward: Default::default(),
             z: Default::default(),
-            counts_per_rev: Default::default(),
+            limit: Default::default(),
+            limit_less_one: Default::default(),
             cfg_z_mode: Default::default(),
             position: Default::default(),
             z_latch: Default::default(),
@@ -134,7 +139,7 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             error_reg: Default::default(),
             error_count: Default::default(),
             fault_reg: Default::default(),
-            limit: Default::default(),
+            count_is_rev: Default::default(),
             stepped: Default::default(),
             rise: Default::default(),
             any_now: Default::default(),
@@ -178,8 +183,6 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             error_count,
             fault_reg
         );
-        // R − 1 in C bits (R = 0 gives 2^C − 1).
-        self.limit.next = self.counts_per_rev.val() - self.pos_one.val();
         self.rise.next = self.z_delay.q.val() & !self.z_prev.q.val();
         self.z_delay.d.next = self.z.val();
         self.z_prev.d.next = self.z_delay.q.val();
@@ -228,12 +231,25 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
                 self.mixed_now.next = false;
             }
         }
+        // more_now = limit, compared on the registers (so that the incrementer and the
+        // comparison are not in series): more + 1 = R − 1 is more = R − 2 when more is not
+        // all ones (all ones does not increment: it overflows); a first step makes it 0.
+        self.count_is_rev.next = self.rev_more.q.val() == self.limit.val();
+        if self.step.val() {
+            if self.rev_any.q.val() {
+                if self.rev_more.q.val() != self.pos_max.val() {
+                    self.count_is_rev.next = self.rev_more.q.val() == self.limit_less_one.val();
+                }
+            } else {
+                self.count_is_rev.next = self.limit.val() == self.pos_zero.val();
+            }
+        }
         // A checked interval whose count is not R.
         self.bad.next = self.armed.q.val()
             & (self.cfg_z_mode.val() != self.mode_ignore.val())
             & self.any_now.val()
             & !self.mixed_now.val()
-            & (self.over_now.val() | (self.more_now.val() != self.limit.val()));
+            & (self.over_now.val() | !self.count_is_rev.val());
 
         self.position_reg.d.next = self.stepped.val();
         self.index_reg.d.next = self.rise.val();
@@ -313,7 +329,9 @@ mod tests {
             uut.step.next = s == 1;
             uut.forward.next = f == 1;
             uut.z.next = z == 1;
-            uut.counts_per_rev.next = cpr.into();
+            let (limit, limit_less_one) = golden::frontend::position_counter::limits(cpr, 4);
+            uut.limit.next = limit.into();
+            uut.limit_less_one.next = limit_less_one.into();
             uut.cfg_z_mode.next = z_mode.into();
             uut.clock.next = Clock { clk: false };
             assert!(simulate(&mut uut, 100));

@@ -171,7 +171,9 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     engine_reset: Signal<Local, Bit>,
     dt_eff: Signal<Local, Bits<N>>,
     shift: Signal<Local, Bits<2>>,
-    counts_per_rev: Signal<Local, Bits<C>>,
+    /// R − 1 and R − 2 of the decoding mode, for the position counter.
+    limit: Signal<Local, Bits<C>>,
+    limit_less_one: Signal<Local, Bits<C>>,
     n_zero: Constant<Bits<N>>,
     n_one: Constant<Bits<N>>,
     min_dt: Constant<Bits<N>>,
@@ -184,9 +186,12 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     shift_zero: Constant<Bits<2>>,
     shift_one: Constant<Bits<2>>,
     shift_two: Constant<Bits<2>>,
-    lines_x1: Constant<Bits<C>>,
-    lines_x2: Constant<Bits<C>>,
-    lines_x4: Constant<Bits<C>>,
+    limit_x1: Constant<Bits<C>>,
+    limit_x2: Constant<Bits<C>>,
+    limit_x4: Constant<Bits<C>>,
+    limit_less_one_x1: Constant<Bits<C>>,
+    limit_less_one_x2: Constant<Bits<C>>,
+    limit_less_one_x4: Constant<Bits<C>>,
 }
 
 impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
@@ -195,8 +200,12 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
     pub fn new(p: &Params) -> Self {
         assert_eq!(p.counter_bits() as usize, N, "counter width mismatch");
         assert!(P == 2 * N + 1 && S == N + F + 1, "derived widths");
-        let lines =
-            |shift: u32| -> Bits<C> { (p.counts_per_rev(shift) & ((1u64 << C) - 1)).into() };
+        // R − 1 and R − 2 (mod 2^C) of each decoding mode.
+        let limits = |shift: u32| -> (Bits<C>, Bits<C>) {
+            let (l, l1) =
+                golden::frontend::position_counter::limits(p.counts_per_rev(shift), C as u32);
+            (l.into(), l1.into())
+        };
         Self {
             clock: Default::default(),
             reset: Default::default(),
@@ -284,7 +293,8 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             engine_reset: Default::default(),
             dt_eff: Default::default(),
             shift: Default::default(),
-            counts_per_rev: Default::default(),
+            limit: Default::default(),
+            limit_less_one: Default::default(),
             n_zero: Constant::new(0.into()),
             n_one: Constant::new(1.into()),
             min_dt: Constant::new(MIN_DT_CYCLES.into()),
@@ -297,9 +307,12 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             shift_zero: Constant::new(0.into()),
             shift_one: Constant::new(1.into()),
             shift_two: Constant::new(2.into()),
-            lines_x1: Constant::new(lines(0)),
-            lines_x2: Constant::new(lines(1)),
-            lines_x4: Constant::new(lines(2)),
+            limit_x1: Constant::new(limits(0).0),
+            limit_x2: Constant::new(limits(1).0),
+            limit_x4: Constant::new(limits(2).0),
+            limit_less_one_x1: Constant::new(limits(0).1),
+            limit_less_one_x2: Constant::new(limits(1).1),
+            limit_less_one_x4: Constant::new(limits(2).1),
         }
     }
 }
@@ -349,13 +362,16 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.cfg_error_reg.d.next = (self.cfg_dt.val() == self.n_one.val())
             | (self.cfg_mode.val() == self.mode_invalid.val());
         self.shift.next = self.shift_two.val();
-        self.counts_per_rev.next = self.lines_x4.val();
+        self.limit.next = self.limit_x4.val();
+        self.limit_less_one.next = self.limit_less_one_x4.val();
         if self.cfg_mode.val() == self.mode_x1.val() {
             self.shift.next = self.shift_zero.val();
-            self.counts_per_rev.next = self.lines_x1.val();
+            self.limit.next = self.limit_x1.val();
+            self.limit_less_one.next = self.limit_less_one_x1.val();
         } else if self.cfg_mode.val() == self.mode_x2.val() {
             self.shift.next = self.shift_one.val();
-            self.counts_per_rev.next = self.lines_x2.val();
+            self.limit.next = self.limit_x2.val();
+            self.limit_less_one.next = self.limit_less_one_x2.val();
         }
 
         // Front end.
@@ -385,7 +401,8 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.counter.step.next = self.decoder.step.val();
         self.counter.forward.next = self.decoder.forward.val();
         self.counter.z.next = self.filter_z.level_out.val();
-        self.counter.counts_per_rev.next = self.counts_per_rev.val();
+        self.counter.limit.next = self.limit.val();
+        self.counter.limit_less_one.next = self.limit_less_one.val();
         self.counter.cfg_z_mode.next = self.cfg_z_mode.val();
 
         // The first step of a direction (after reset or a reversal) restarts the estimator

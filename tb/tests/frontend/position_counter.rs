@@ -13,6 +13,7 @@ use crate::common::{
     self,
     knobs::{coverage_cases, icarus_cases, knobs, Knobs, Rng},
 };
+use golden::frontend::position_counter::limits;
 use golden::frontend::{CounterInputs, CounterOutputs, PositionCounter as GoldCounter};
 use hdl::{position_counter_verilog, PositionCounter};
 use proptest::prelude::*;
@@ -101,7 +102,9 @@ fn rust_hdl(stim: &[CounterInputs]) -> Vec<CounterOutputs> {
             uut.step.next = i.step;
             uut.forward.next = i.forward;
             uut.z.next = i.z;
-            uut.counts_per_rev.next = i.counts_per_rev.into();
+            let (limit, limit_less_one) = limits(i.counts_per_rev, POSITION_BITS as u32);
+            uut.limit.next = limit.into();
+            uut.limit_less_one.next = limit_less_one.into();
             uut.cfg_z_mode.next = u64::from(i.cfg_z_mode).into();
             common::edge(&mut uut, |u, v| u.clock.next = Clock { clk: v });
             CounterOutputs {
@@ -170,7 +173,8 @@ fn emitted_verilog_equals_golden_in_icarus() {
                 u64::from(i.step),
                 u64::from(i.forward),
                 u64::from(i.z),
-                i.counts_per_rev,
+                limits(i.counts_per_rev, POSITION_BITS as u32).0,
+                limits(i.counts_per_rev, POSITION_BITS as u32).1,
                 u64::from(i.cfg_z_mode),
             ]
         })
@@ -184,7 +188,8 @@ fn emitted_verilog_equals_golden_in_icarus() {
             ("step", 1),
             ("forward", 1),
             ("z", 1),
-            ("counts_per_rev", POSITION_BITS),
+            ("limit", POSITION_BITS),
+            ("limit_less_one", POSITION_BITS),
             ("cfg_z_mode", 2),
         ],
         &[
