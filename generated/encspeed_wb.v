@@ -4752,6 +4752,12 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
     reg  [31:0] position_reg$d;
     wire  [31:0] position_reg$q;
     reg  position_reg$clock;
+    reg  not_zero$d;
+    wire  not_zero$q;
+    reg  not_zero$clock;
+    reg  at_limit$d;
+    wire  at_limit$q;
+    reg  at_limit$clock;
     reg  [31:0] latch_reg$d;
     wire  [31:0] latch_reg$q;
     reg  latch_reg$clock;
@@ -4795,6 +4801,9 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
     // Local signals
     reg  count_is_rev;
     reg  [31:0] stepped;
+    reg  stepped_not_zero;
+    reg  stepped_at_limit;
+    reg  single;
     reg  rise;
     reg  any_now;
     reg  [31:0] more_now;
@@ -4808,6 +4817,16 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
         .d(position_reg$d),
         .q(position_reg$q),
         .clock(position_reg$clock)
+    );
+    encspeed_wb$core$counter$not_zero not_zero(
+        .d(not_zero$d),
+        .q(not_zero$q),
+        .clock(not_zero$clock)
+    );
+    encspeed_wb$core$counter$at_limit at_limit(
+        .d(at_limit$d),
+        .q(at_limit$q),
+        .clock(at_limit$clock)
     );
     encspeed_wb$core$counter$latch_reg latch_reg(
         .d(latch_reg$d),
@@ -4878,6 +4897,8 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
     // Update code
     always @(*) begin
         position_reg$clock = clock;
+        not_zero$clock = clock;
+        at_limit$clock = clock;
         latch_reg$clock = clock;
         index_reg$clock = clock;
         z_delay$clock = clock;
@@ -4892,6 +4913,8 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
         error_count$clock = clock;
         fault_reg$clock = clock;
         position_reg$d = position_reg$q;
+        not_zero$d = not_zero$q;
+        at_limit$d = at_limit$q;
         latch_reg$d = latch_reg$q;
         index_reg$d = index_reg$q;
         z_delay$d = z_delay$q;
@@ -4908,21 +4931,32 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
         rise = z_delay$q & ~z_prev$q;
         z_delay$d = z;
         z_prev$d = z_delay$q;
+        single = limit == pos_zero;
         stepped = position_reg$q;
+        stepped_not_zero = not_zero$q;
+        stepped_at_limit = at_limit$q;
         if (step & forward) begin
-            if (position_reg$q >= limit) begin
+            if (at_limit$q) begin
                 stepped = pos_zero;
+                stepped_not_zero = 1'b0;
+                stepped_at_limit = single;
             end
             else begin
                 stepped = position_reg$q + pos_one;
+                stepped_not_zero = 1'b1;
+                stepped_at_limit = position_reg$q == limit_less_one;
             end
         end
         if (step & ~forward) begin
-            if ((position_reg$q == pos_zero) | (position_reg$q > limit)) begin
+            if (~not_zero$q) begin
                 stepped = limit;
+                stepped_not_zero = ~single;
+                stepped_at_limit = 1'b1;
             end
             else begin
                 stepped = position_reg$q - pos_one;
+                stepped_not_zero = position_reg$q != pos_one;
+                stepped_at_limit = 1'b0;
             end
         end
         any_now = rev_any$q;
@@ -4963,6 +4997,8 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
         end
         bad = armed$q & (cfg_z_mode != mode_ignore) & any_now & ~mixed_now & (over_now | ~count_is_rev);
         position_reg$d = stepped;
+        not_zero$d = stepped_not_zero;
+        at_limit$d = stepped_at_limit;
         index_reg$d = rise;
         fault_reg$d = 1'b0;
         rev_any$d = any_now;
@@ -4976,6 +5012,8 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
             end
             if ((cfg_z_mode == mode_reset) | (cfg_z_mode == mode_both)) begin
                 position_reg$d = pos_zero;
+                not_zero$d = 1'b0;
+                at_limit$d = single;
             end
             if (bad) begin
                 error_reg$d = 1'b1;
@@ -4992,6 +5030,8 @@ module encspeed_wb$core$counter(clock,reset,step,forward,z,limit,limit_less_one,
         end
         if (reset) begin
             position_reg$d = pos_zero;
+            not_zero$d = 1'b0;
+            at_limit$d = single;
             latch_reg$d = pos_zero;
             index_reg$d = 1'b0;
             z_delay$d = 1'b1;
@@ -5034,6 +5074,25 @@ module encspeed_wb$core$counter$armed(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$counter$armed
+
+
+module encspeed_wb$core$counter$at_limit(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$counter$at_limit
 
 
 module encspeed_wb$core$counter$error_count(d,q,clock);
@@ -5129,6 +5188,25 @@ module encspeed_wb$core$counter$latch_reg(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$counter$latch_reg
+
+
+module encspeed_wb$core$counter$not_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$counter$not_zero
 
 
 module encspeed_wb$core$counter$position_reg(d,q,clock);
@@ -6883,9 +6961,9 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     localparam  max = 24'hffffff;
     
     // Stub signals
-    reg  [23:0] phase$d;
-    wire  [23:0] phase$q;
-    reg  phase$clock;
+    reg  [23:0] phase_reg$d;
+    wire  [23:0] phase_reg$q;
+    reg  phase_reg$clock;
     reg  anchored$d;
     wire  anchored$q;
     reg  anchored$clock;
@@ -6921,7 +6999,7 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     reg  strobe_reg$clock;
     
     // Local signals
-    reg  [23:0] dt_limit;
+    reg  [23:0] phase_plus_one;
     reg  tick;
     reg  rev;
     reg  cont;
@@ -6934,10 +7012,10 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     reg  [23:0] last_now;
     
     // Sub module instances
-    encspeed_wb$core$mt$phase phase(
-        .d(phase$d),
-        .q(phase$q),
-        .clock(phase$clock)
+    encspeed_wb$core$mt$phase_reg phase_reg(
+        .d(phase_reg$d),
+        .q(phase_reg$q),
+        .clock(phase_reg$clock)
     );
     encspeed_wb$core$mt$anchored anchored(
         .d(anchored$d),
@@ -6997,7 +7075,7 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     
     // Update code
     always @(*) begin
-        phase$clock = clock;
+        phase_reg$clock = clock;
         anchored$clock = clock;
         have_dir$clock = clock;
         dir$clock = clock;
@@ -7009,7 +7087,7 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
         t_reg$clock = clock;
         neg_reg$clock = clock;
         strobe_reg$clock = clock;
-        phase$d = phase$q;
+        phase_reg$d = phase_reg$q;
         anchored$d = anchored$q;
         have_dir$d = have_dir$q;
         dir$d = dir$q;
@@ -7021,14 +7099,11 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
         t_reg$d = t_reg$q;
         neg_reg$d = neg_reg$q;
         strobe_reg$d = strobe_reg$q;
-        dt_limit = cfg_dt - one;
-        if (cfg_dt == zero) begin
-            dt_limit = zero;
-        end
-        tick = phase$q >= dt_limit;
-        phase$d = phase$q + one;
+        phase_plus_one = phase_reg$q ^ one;
+        tick = phase_plus_one >= cfg_dt;
+        phase_reg$d = (phase_plus_one + one) ^ one;
         if (tick) begin
-            phase$d = zero;
+            phase_reg$d = zero;
         end
         m_inc = m_count$q + one;
         if (m_count$q == max) begin
@@ -7086,7 +7161,7 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
             dir$d = forward;
         end
         if (reset) begin
-            phase$d = zero;
+            phase_reg$d = zero;
             anchored$d = 1'b0;
             have_dir$d = 1'b0;
             dir$d = 1'b0;
@@ -7261,7 +7336,7 @@ module encspeed_wb$core$mt$neg_reg(d,q,clock);
 endmodule // encspeed_wb$core$mt$neg_reg
 
 
-module encspeed_wb$core$mt$phase(d,q,clock);
+module encspeed_wb$core$mt$phase_reg(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -7277,7 +7352,7 @@ module encspeed_wb$core$mt$phase(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_wb$core$mt$phase
+endmodule // encspeed_wb$core$mt$phase_reg
 
 
 module encspeed_wb$core$mt$span(d,q,clock);
@@ -7355,12 +7430,11 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     localparam  msb = 24'h800000;
     localparam  one = 24'h1;
     localparam  max_pos = 24'h7fffff;
-    localparam  min_mag = 24'h800000;
     
     // Stub signals
-    reg  [23:0] phase$d;
-    wire  [23:0] phase$q;
-    reg  phase$clock;
+    reg  [23:0] phase_reg$d;
+    wire  [23:0] phase_reg$q;
+    reg  phase_reg$clock;
     reg  [23:0] net_lo$d;
     wire  [23:0] net_lo$q;
     reg  net_lo$clock;
@@ -7378,7 +7452,7 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     reg  strobe_reg$clock;
     
     // Local signals
-    reg  [23:0] dt_limit;
+    reg  [23:0] phase_plus_one;
     reg  tick;
     reg  up;
     reg  down;
@@ -7386,10 +7460,10 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     reg  fits;
     
     // Sub module instances
-    encspeed_wb$core$pc$phase phase(
-        .d(phase$d),
-        .q(phase$q),
-        .clock(phase$clock)
+    encspeed_wb$core$pc$phase_reg phase_reg(
+        .d(phase_reg$d),
+        .q(phase_reg$q),
+        .clock(phase_reg$clock)
     );
     encspeed_wb$core$pc$net_lo net_lo(
         .d(net_lo$d),
@@ -7419,24 +7493,21 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     
     // Update code
     always @(*) begin
-        phase$clock = clock;
+        phase_reg$clock = clock;
         net_lo$clock = clock;
         net_hi$clock = clock;
         count_reg$clock = clock;
         sat_reg$clock = clock;
         strobe_reg$clock = clock;
-        phase$d = phase$q;
+        phase_reg$d = phase_reg$q;
         net_lo$d = net_lo$q;
         net_hi$d = net_hi$q;
         count_reg$d = count_reg$q;
         sat_reg$d = sat_reg$q;
         strobe_reg$d = strobe_reg$q;
-        dt_limit = cfg_dt - one;
-        if (cfg_dt == zero) begin
-            dt_limit = zero;
-        end
-        tick = phase$q >= dt_limit;
-        phase$d = phase$q + one;
+        phase_plus_one = phase_reg$q ^ one;
+        tick = phase_plus_one >= cfg_dt;
+        phase_reg$d = (phase_plus_one + one) ^ one;
         up = step & forward;
         down = step & ~forward;
         delta = one;
@@ -7446,13 +7517,13 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
         fits = ~(net_hi$q ^ ((net_lo$q & msb) != zero));
         strobe_reg$d = tick;
         if (tick) begin
-            phase$d = zero;
+            phase_reg$d = zero;
             count_reg$d = net_lo$q;
             sat_reg$d = ~fits;
             if (~fits) begin
                 count_reg$d = max_pos;
                 if (net_hi$q) begin
-                    count_reg$d = min_mag;
+                    count_reg$d = msb;
                 end
             end
             net_lo$d = zero;
@@ -7472,7 +7543,7 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
             end
         end
         if (reset) begin
-            phase$d = zero;
+            phase_reg$d = zero;
             net_lo$d = zero;
             net_hi$d = 1'b0;
             count_reg$d = zero;
@@ -7544,7 +7615,7 @@ module encspeed_wb$core$pc$net_lo(d,q,clock);
 endmodule // encspeed_wb$core$pc$net_lo
 
 
-module encspeed_wb$core$pc$phase(d,q,clock);
+module encspeed_wb$core$pc$phase_reg(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -7560,7 +7631,7 @@ module encspeed_wb$core$pc$phase(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_wb$core$pc$phase
+endmodule // encspeed_wb$core$pc$phase_reg
 
 
 module encspeed_wb$core$pc$sat_reg(d,q,clock);
@@ -7656,6 +7727,9 @@ module encspeed_wb$core$startup(clock,reset,cfg_filter,front_reset);
     localparam  sync_zero = 2'b0;
     
     // Stub signals
+    reg  released$d;
+    wire  released$q;
+    reg  released$clock;
     reg  [1:0] sync_edges$d;
     wire  [1:0] sync_edges$q;
     reg  sync_edges$clock;
@@ -7671,6 +7745,11 @@ module encspeed_wb$core$startup(clock,reset,cfg_filter,front_reset);
     reg  [15:0] filter_delay;
     
     // Sub module instances
+    encspeed_wb$core$startup$released released(
+        .d(released$d),
+        .q(released$q),
+        .clock(released$clock)
+    );
     encspeed_wb$core$startup$sync_edges sync_edges(
         .d(sync_edges$d),
         .q(sync_edges$q),
@@ -7692,9 +7771,11 @@ module encspeed_wb$core$startup(clock,reset,cfg_filter,front_reset);
         sync_edges$clock = clock;
         settle_edges$clock = clock;
         done$clock = clock;
+        released$clock = clock;
         sync_edges$d = sync_edges$q;
         settle_edges$d = settle_edges$q;
         done$d = done$q;
+        released$d = released$q;
         filter_delay = cfg_filter;
         if (cfg_filter == zero) begin
             filter_delay = one;
@@ -7715,7 +7796,8 @@ module encspeed_wb$core$startup(clock,reset,cfg_filter,front_reset);
             settle_edges$d = zero;
         end
         hold = ~done$q & ((sync_edges$q != two) | (settle_edges$q < filter_delay));
-        front_reset = reset | hold;
+        released$d = ~(reset | hold);
+        front_reset = reset | ~released$q;
     end
     
 endmodule // encspeed_wb$core$startup
@@ -7738,6 +7820,25 @@ module encspeed_wb$core$startup$done(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$startup$done
+
+
+module encspeed_wb$core$startup$released(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$startup$released
 
 
 module encspeed_wb$core$startup$settle_edges(d,q,clock);
@@ -8819,19 +8920,19 @@ module encspeed_wb$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,sta
     // Constant declarations
     localparam  zero = 24'h0;
     localparam  one = 24'h1;
-    localparam  above_min = 24'hfffffe;
+    localparam  two = 24'h2;
     localparam  saturated = 24'hffffff;
     
     // Stub signals
-    reg  [23:0] ts_count$d;
-    wire  [23:0] ts_count$q;
-    reg  ts_count$clock;
+    reg  [23:0] ts_plus_two$d;
+    wire  [23:0] ts_plus_two$q;
+    reg  ts_plus_two$clock;
     reg  [23:0] cdt_count$d;
     wire  [23:0] cdt_count$q;
     reg  cdt_count$clock;
-    reg  [23:0] dt_limit$d;
-    wire  [23:0] dt_limit$q;
-    reg  dt_limit$clock;
+    reg  due$d;
+    wire  due$q;
+    reg  due$clock;
     
     // Local signals
     reg  restart_now;
@@ -8839,39 +8940,37 @@ module encspeed_wb$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,sta
     reg  [23:0] cdt_after_pulse;
     
     // Sub module instances
-    encspeed_wb$core$timebase$ts_count ts_count(
-        .d(ts_count$d),
-        .q(ts_count$q),
-        .clock(ts_count$clock)
+    encspeed_wb$core$timebase$ts_plus_two ts_plus_two(
+        .d(ts_plus_two$d),
+        .q(ts_plus_two$q),
+        .clock(ts_plus_two$clock)
     );
     encspeed_wb$core$timebase$cdt_count cdt_count(
         .d(cdt_count$d),
         .q(cdt_count$q),
         .clock(cdt_count$clock)
     );
-    encspeed_wb$core$timebase$dt_limit dt_limit(
-        .d(dt_limit$d),
-        .q(dt_limit$q),
-        .clock(dt_limit$clock)
+    encspeed_wb$core$timebase$due due(
+        .d(due$d),
+        .q(due$q),
+        .clock(due$clock)
     );
     
     // Update code
     always @(*) begin
-        ts_count$clock = clock;
+        ts_plus_two$clock = clock;
         cdt_count$clock = clock;
-        dt_limit$clock = clock;
-        ts_count$d = ts_count$q;
+        due$clock = clock;
+        ts_plus_two$d = ts_plus_two$q;
         cdt_count$d = cdt_count$q;
-        dt_limit$d = dt_limit$q;
+        due$d = due$q;
         restart_now = lep & (cdt_count$q != zero);
-        dt_limit$d = dt - one;
-        if ((dt & above_min) == zero) begin
-            dt_limit$d = one;
-        end
-        tick_now = ~restart_now & (ts_count$q >= dt_limit$q);
-        ts_count$d = ts_count$q + one;
+        tick_now = ~restart_now & due$q;
+        ts_plus_two$d = ts_plus_two$q + one;
+        due$d = ts_plus_two$q >= dt;
         if (restart_now | tick_now) begin
-            ts_count$d = zero;
+            ts_plus_two$d = two;
+            due$d = 1'b0;
         end
         cdt_after_pulse = cdt_count$q;
         if (lep) begin
@@ -8882,7 +8981,8 @@ module encspeed_wb$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,sta
             cdt_count$d = cdt_after_pulse + one;
         end
         if (reset) begin
-            ts_count$d = zero;
+            ts_plus_two$d = two;
+            due$d = 1'b0;
             cdt_count$d = zero;
         end
         tick = tick_now;
@@ -8913,7 +9013,26 @@ module encspeed_wb$core$timebase$cdt_count(d,q,clock);
 endmodule // encspeed_wb$core$timebase$cdt_count
 
 
-module encspeed_wb$core$timebase$dt_limit(d,q,clock);
+module encspeed_wb$core$timebase$due(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$timebase$due
+
+
+module encspeed_wb$core$timebase$ts_plus_two(d,q,clock);
     
     // Module arguments
     input wire  [23:0] d;
@@ -8929,26 +9048,7 @@ module encspeed_wb$core$timebase$dt_limit(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_wb$core$timebase$dt_limit
-
-
-module encspeed_wb$core$timebase$ts_count(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$timebase$ts_count
+endmodule // encspeed_wb$core$timebase$ts_plus_two
 
 
 module encspeed_wb$core$timeout_reg(d,q,clock);

@@ -41,12 +41,18 @@ fn quad(k: u64, period: u64, forward: bool) -> (bool, bool) {
     (a, b)
 }
 
-/// Run `cycles` cycles of a constant quadrature wave after 3 cycles of reset.
+/// Edges the wave rests at its first level after the reset: more than the start-up hold
+/// (2 synchroniser edges + 1 filter edge + the registered hold's edge), so that no
+/// transition falls inside the hold, where it would not be a step.
+const REST: u64 = 8;
+
+/// Run `cycles` cycles of a constant quadrature wave after 3 cycles of reset and `REST`
+/// cycles at rest.
 fn run_wave(mode: u8, period: u64, forward: bool, cycles: u64) -> Vec<CoreOutputs> {
     let mut m = CoreModel::new(&params());
-    (0..cycles + 3)
+    (0..cycles + 3 + REST)
         .map(|k| {
-            let (a, b) = quad(k, period, forward);
+            let (a, b) = quad(k.saturating_sub(REST), period, forward);
             m.step(CoreInputs {
                 reset: k < 3,
                 enc_a: a,

@@ -316,10 +316,12 @@ fn position_wraps_modulo_counts_per_rev() {
     // counts_per_rev = 0 stands for 2^C: with C = 3 the position wraps at 8.
     let (out, _) = count(3, 0, Z_MODE_IGNORE, &[B, B, F, F, F]);
     assert_eq!(positions(&out), [7, 6, 7, 0, 1]);
-    // Lowering R below the position: forward wraps to 0, backward lands on R − 1.
+    // A new R takes a reset (the core changes R only with the decoding mode, which
+    // resets it): after it, R = 3 wraps 0→2 backward and 2→0 forward.
     let mut c = PositionCounter::new(8, 2);
-    let mut go = |step, forward, cpr| {
+    let mut go = |reset, step, forward, cpr| {
         c.step(CounterInputs {
+            reset,
             step,
             forward,
             counts_per_rev: cpr,
@@ -328,14 +330,26 @@ fn position_wraps_modulo_counts_per_rev() {
         .position
     };
     for _ in 0..6 {
-        go(true, true, 10);
+        go(false, true, true, 10);
     }
-    assert_eq!(go(false, false, 3), 6);
-    assert_eq!(go(true, false, 3), 2);
-    for _ in 0..6 {
-        go(true, true, 10);
-    }
-    assert_eq!(go(true, true, 3), 0);
+    assert_eq!(go(true, false, false, 3), 0);
+    assert_eq!(go(false, true, false, 3), 2);
+    assert_eq!(go(false, true, true, 3), 0);
+}
+
+/// R changed without a reset breaks the block's contract (p ≤ R − 1): the model refuses it.
+#[test]
+#[should_panic(expected = "without a reset")]
+fn counts_per_rev_changes_only_with_a_reset() {
+    let mut c = PositionCounter::new(8, 2);
+    let inp = |cpr| CounterInputs {
+        step: true,
+        forward: true,
+        counts_per_rev: cpr,
+        ..Default::default()
+    };
+    c.step(inp(10));
+    c.step(inp(3));
 }
 
 #[test]

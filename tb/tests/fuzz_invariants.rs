@@ -32,8 +32,9 @@
 
 use golden::estimator::bounds::n3_error_budget;
 use golden::estimator::speed_calc::latency_cycles;
+use golden::estimator::speed_calc::mode_scale_error_lsb;
 use golden::params::{Params, ERROR_COUNT_BITS};
-use golden::top::core::{mode_scale_error_lsb, mode_shift, SYNC_CYCLES};
+use golden::top::core::{mode_shift, SYNC_CYCLES};
 use golden::top::core::{CoreInputs, CoreModel, CoreOutputs};
 use proptest::prelude::*;
 use proptest::test_runner::{FileFailurePersistence, TestRunner};

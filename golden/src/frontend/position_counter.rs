@@ -76,11 +76,7 @@ pub struct CounterState {
 /// (0 standing for 2^C) at C = `position_bits`: limit = R − 1 and R − 2, both mod 2^C. The
 /// block compares with them instead of subtracting from R in the cycle.
 pub fn limits(counts_per_rev: u64, position_bits: u32) -> (u64, u64) {
-    let mask = if position_bits >= 64 {
-        u64::MAX
-    } else {
-        (1u64 << position_bits) - 1
-    };
+    let mask = max_of(position_bits);
     (
         counts_per_rev.wrapping_sub(1) & mask,
         counts_per_rev.wrapping_sub(2) & mask,
@@ -93,8 +89,10 @@ pub fn limits(counts_per_rev: u64, position_bits: u32) -> (u64, u64) {
 /// 1. Index: rise = z(one edge ago) ∧ ¬z(two edges ago). Both delay flops reset high, so no
 ///    index edge is seen before two real samples of `z` are compared (the third edge after
 ///    reset, in step with the decoder's first possible step).
-/// 2. Stepped position p: forward from p ≥ limit goes to 0, else p + 1; backward from p = 0
-///    (or from p > limit, after R was lowered) goes to limit, else p − 1.
+/// 2. Stepped position p: forward from p = limit goes to 0, else p + 1; backward from p = 0
+///    goes to limit, else p − 1. R may change only at a reset edge (the core changes it
+///    only with the decoding mode, which resets the core), so p ≤ limit always holds; the
+///    model asserts it. The hardware keeps "p = 0" and "p = limit" as registered flags.
 /// 3. On rise: latch modes (2, 3) set `z_latch` = p (the step of this cycle included: the
 ///    index edge and the step of the same encoder transition arrive together); reset modes
 ///    (1, 3) set the position to 0 instead of p; `index` is high after the edge.
@@ -119,6 +117,8 @@ pub fn limits(counts_per_rev: u64, position_bits: u32) -> (u64, u64) {
 pub struct PositionCounter {
     position_max: u64,
     error_max: u64,
+    /// R since the last reset edge (None until the first edge).
+    counts_per_rev: Option<u64>,
     s: CounterState,
 }
 
@@ -129,6 +129,7 @@ impl PositionCounter {
         let mut c = PositionCounter {
             position_max: max_of(position_bits),
             error_max: max_of(error_bits),
+            counts_per_rev: None,
             s: CounterState::default(),
         };
         c.s = c.reset_state();
@@ -168,25 +169,27 @@ impl PositionCounter {
             inp.counts_per_rev
         );
         assert!(inp.cfg_z_mode <= Z_MODE_LATCH_RESET, "cfg_z_mode");
+        let r_before = self.counts_per_rev.replace(inp.counts_per_rev);
+        assert!(
+            inp.reset || r_before.is_none_or(|r| r == inp.counts_per_rev),
+            "counts_per_rev changed from {r_before:?} to {} without a reset",
+            inp.counts_per_rev
+        );
         if inp.reset {
             self.s = self.reset_state();
             return self.outputs();
         }
         let s = self.s;
         let max = self.position_max;
-        // R − 1 in C bits: 0 stands for 2^C.
-        let limit = if inp.counts_per_rev == 0 {
-            max
-        } else {
-            inp.counts_per_rev - 1
-        };
+        // R − 1 in C bits (0 stands for 2^C): the hardware's own constant.
+        let limit = limits(inp.counts_per_rev, max.count_ones()).0;
         let rev_len = limit + 1;
         let rise = s.z_delay && !s.z_prev;
         let stepped = match (inp.step, inp.forward) {
             (false, _) => s.position,
-            (true, true) if s.position >= limit => 0,
+            (true, true) if s.position == limit => 0,
             (true, true) => s.position + 1,
-            (true, false) if s.position == 0 || s.position > limit => limit,
+            (true, false) if s.position == 0 => limit,
             (true, false) => s.position - 1,
         };
         // The interval including this cycle's step.

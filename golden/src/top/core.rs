@@ -18,10 +18,12 @@
 //!
 //! # Rules that are the core's own (the blocks' rules are in their modules)
 //! - **Start-up.** The synchronisers and filters leave reset low. The decoder and the
-//!   position counter are held in reset while fewer than 2 + max(`cfg_filter`, 1) edges have
-//!   passed since reset (`fill`), so that the first sample they take is a filtered sample of
-//!   the real channels: a channel already high at reset is not a step. The hold ends once
-//!   for all: raising `cfg_filter` later does not bring it back.
+//!   position counter are held in reset through the edge after the last one at which fewer
+//!   than 2 + max(`cfg_filter`, 1) edges had passed since reset (`fill`): the rule is
+//!   registered, so the hold lasts one edge longer than the filter needs. The first sample
+//!   they take is then a filtered sample of the real channels: a channel already high at
+//!   reset is not a step. The hold ends once for all: raising `cfg_filter` later does not
+//!   bring it back.
 //! - **Rairán's pulse** is a decoder step (x1, x2 or x4), of either direction. The estimator
 //!   measures one direction at a time. The **first step of a direction** — the first after
 //!   reset, or a **reversal** (a step whose direction differs from the previous step's) —
@@ -37,7 +39,7 @@
 //!   x4). The speed calculator computes n in steps per dt with F fractional bits and
 //!   outputs n / 2^s in units of ω_lim (one line per dt), the shift latched with each
 //!   request: the magnitude rounded to nearest, ties away from zero, then the sign. Error:
-//!   ½ LSB in x1, ½ + ½/2^s LSB in x2 and x4 ([`mode_scale_error_lsb`]). A change of mode
+//!   ½ LSB in x1, ½ + ½/2^s LSB in x2 and x4 ([`mode_scale_error_lsb`](crate::estimator::speed_calc::mode_scale_error_lsb)). A change of mode
 //!   resets the calculator, so every result uses the mode the core is in.
 //! - **Configuration.** `cfg_dt` = 0 means the generation default dt, 1 is used as 2 and
 //!   flags `cfg_error`; `cfg_timeout` = 0 means the generation default timeout; `cfg_mode` 3
@@ -65,7 +67,6 @@ use crate::baselines::et_timer::{EtInputs, EtTimer};
 use crate::baselines::mt_counter::{MtCounter, MtInputs};
 use crate::baselines::pc_counter::{PcCounter, PcInputs};
 use crate::estimator::speed_calc::{self, SpeedCalcInputs, SpeedCalcModel, SpeedFormat, Speeds};
-pub use crate::estimator::speed_calc::{mode_scale, mode_scale_error_lsb};
 use crate::estimator::sync_estimator::Table1;
 use crate::frontend::{
     CounterInputs, DecoderInputs, GlitchFilter, GlitchFilterInputs, PositionCounter,
@@ -212,6 +213,8 @@ pub struct CoreModel {
     lines: u64,
     fill: u64,
     front_done: bool,
+    /// The start-up hold, registered: the hold rule of the edge before.
+    front_hold: bool,
     sync: [[bool; 2]; 3],
     filters: [GlitchFilter; 3],
     decoder: QuadratureDecoder,
@@ -260,6 +263,7 @@ impl CoreModel {
             lines: u64::from(p.lines()),
             fill: 0,
             front_done: false,
+            front_hold: true,
             sync: [[false; 2]; 3],
             filters: std::array::from_fn(|_| GlitchFilter::new(FILTER_BITS, ERROR_COUNT_BITS)),
             decoder: QuadratureDecoder::new(ERROR_COUNT_BITS),
@@ -343,8 +347,9 @@ impl CoreModel {
         let mt = self.mt.outputs();
 
         let settling = self.fill < SYNC_CYCLES + inp.cfg_filter.max(1);
-        let front_hold = !self.front_done && settling;
-        let front_reset = rst || front_hold;
+        // The hold applies one edge after the rule that sets it (a register: the rule's
+        // comparison does not reach the reset of the decoder and the counter in one cycle).
+        let front_reset = rst || self.front_hold;
         // The first step of a direction (after reset or a reversal) restarts the estimator
         // at that step; a reversal also clears the speeds.
         let reversal = dec.step && self.have_dir && dec.forward != self.last_dir;
@@ -507,6 +512,7 @@ impl CoreModel {
                 [level, self.sync[c][0]]
             };
         }
+        self.front_hold = rst || (!self.front_done && settling);
         self.front_done = !rst && (self.front_done || !settling);
         self.fill = if rst {
             0

@@ -7,9 +7,9 @@
 //! each term).
 
 use crate::estimator::bounds::{estimator_bound, Estimator};
+use crate::estimator::speed_calc::mode_scale_error_lsb;
 use crate::estimator::speed_calc::speed_lsb_error;
 use crate::params::Params;
-use crate::top::core::mode_scale_error_lsb;
 use serde::Serialize;
 
 /// The bound on the relative error of `est`'s output at a constant r lines per dt, decoding

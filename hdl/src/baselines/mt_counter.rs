@@ -47,7 +47,11 @@ pub struct MtCounter<const N: usize> {
     pub strobe: Signal<Out, Bit>,
     /// No step for 2^N − 1 cycles or more.
     pub stalled: Signal<Out, Bit>,
-    phase: DFF<Bits<N>>,
+    /// The time base's phase + 1 (at most 2^N − 1: the phase never exceeds dt − 1) with
+    /// bit 0 inverted, so that the register's power-up and reset value 0 is phase 0.
+    phase_reg: DFF<Bits<N>>,
+    /// phase + 1.
+    phase_plus_one: Signal<Local, Bits<N>>,
     anchored: DFF<Bit>,
     have_dir: DFF<Bit>,
     dir: DFF<Bit>,
@@ -59,7 +63,6 @@ pub struct MtCounter<const N: usize> {
     t_reg: DFF<Bits<N>>,
     neg_reg: DFF<Bit>,
     strobe_reg: DFF<Bit>,
-    dt_limit: Signal<Local, Bits<N>>,
     tick: Signal<Local, Bit>,
     rev: Signal<Local, Bit>,
     cont: Signal<Local, Bit>,
@@ -91,7 +94,8 @@ impl<const N: usize> Default for MtCounter<N> {
             negative: Default::default(),
             strobe: Default::default(),
             stalled: Default::default(),
-            phase: Default::default(),
+            phase_reg: Default::default(),
+            phase_plus_one: Default::default(),
             anchored: Default::default(),
             have_dir: Default::default(),
             dir: Default::default(),
@@ -103,7 +107,6 @@ impl<const N: usize> Default for MtCounter<N> {
             t_reg: Default::default(),
             neg_reg: Default::default(),
             strobe_reg: Default::default(),
-            dt_limit: Default::default(),
             tick: Default::default(),
             rev: Default::default(),
             cont: Default::default(),
@@ -125,18 +128,17 @@ impl<const N: usize> Logic for MtCounter<N> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, phase, anchored, have_dir, dir, m_count, age, span, last, m_reg, t_reg,
-            neg_reg, strobe_reg
+            self, clock, phase_reg, anchored, have_dir, dir, m_count, age, span, last, m_reg,
+            t_reg, neg_reg, strobe_reg
         );
         // Time base.
-        self.dt_limit.next = self.cfg_dt.val() - self.one.val();
-        if self.cfg_dt.val() == self.zero.val() {
-            self.dt_limit.next = self.zero.val();
-        }
-        self.tick.next = self.phase.q.val() >= self.dt_limit.val();
-        self.phase.d.next = self.phase.q.val() + self.one.val();
+        // phase ≥ max(dt, 1) − 1 is phase + 1 ≥ dt (dt = 0 included): one carry chain from
+        // registers, no subtraction in front of it.
+        self.phase_plus_one.next = self.phase_reg.q.val() ^ self.one.val();
+        self.tick.next = self.phase_plus_one.val() >= self.cfg_dt.val();
+        self.phase_reg.d.next = (self.phase_plus_one.val() + self.one.val()) ^ self.one.val();
         if self.tick.val() {
-            self.phase.d.next = self.zero.val();
+            self.phase_reg.d.next = self.zero.val();
         }
         // Saturating increments.
         self.m_inc.next = self.m_count.q.val() + self.one.val();
@@ -199,7 +201,7 @@ impl<const N: usize> Logic for MtCounter<N> {
             self.dir.d.next = self.forward.val();
         }
         if self.reset.val() {
-            self.phase.d.next = self.zero.val();
+            self.phase_reg.d.next = self.zero.val();
             self.anchored.d.next = false;
             self.have_dir.d.next = false;
             self.dir.d.next = false;

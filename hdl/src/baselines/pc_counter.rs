@@ -5,7 +5,8 @@
 //!
 //! Per clock edge (N = counter width, 2..=32):
 //! - time base: `tick` = phase ≥ max(`cfg_dt`, 1) − 1; phase ← 0 on a tick, else + 1. Steps
-//!   never restart it (with a constant dt D the ticks are edges D, 2D, … after reset);
+//!   never restart it (with a constant dt D the ticks are edges D, 2D, … after reset). The
+//!   register holds phase + 1 and the test is phase + 1 ≥ `cfg_dt`: one carry chain;
 //! - the net steps f − b of the window [tick, next tick) (forward minus backward): the step
 //!   of a tick edge starts the next window (`golden::ideal::fixed_time`'s convention). A
 //!   window is at most 2^N − 1 edges, so f − b fits N + 1 bits of two's complement: one
@@ -44,7 +45,11 @@ pub struct PcCounter<const N: usize> {
     pub saturated: Signal<Out, Bit>,
     /// One cycle per window end (count written).
     pub strobe: Signal<Out, Bit>,
-    phase: DFF<Bits<N>>,
+    /// The time base's phase + 1 (at most 2^N − 1: the phase never exceeds dt − 1) with
+    /// bit 0 inverted, so that the register's power-up and reset value 0 is phase 0.
+    phase_reg: DFF<Bits<N>>,
+    /// phase + 1.
+    phase_plus_one: Signal<Local, Bits<N>>,
     /// f − b, low N bits.
     net_lo: DFF<Bits<N>>,
     /// f − b, bit N (the sign of the N + 1-bit value).
@@ -52,7 +57,6 @@ pub struct PcCounter<const N: usize> {
     count_reg: DFF<Bits<N>>,
     sat_reg: DFF<Bit>,
     strobe_reg: DFF<Bit>,
-    dt_limit: Signal<Local, Bits<N>>,
     tick: Signal<Local, Bit>,
     up: Signal<Local, Bit>,
     down: Signal<Local, Bit>,
@@ -62,10 +66,10 @@ pub struct PcCounter<const N: usize> {
     fits: Signal<Local, Bit>,
     zero: Constant<Bits<N>>,
     all_ones: Constant<Bits<N>>,
+    /// The sign bit, and the most negative count (−2^(N−1)) a saturated window publishes.
     msb: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
     max_pos: Constant<Bits<N>>,
-    min_mag: Constant<Bits<N>>,
 }
 
 impl<const N: usize> Default for PcCounter<N> {
@@ -80,13 +84,13 @@ impl<const N: usize> Default for PcCounter<N> {
             count: Default::default(),
             saturated: Default::default(),
             strobe: Default::default(),
-            phase: Default::default(),
+            phase_reg: Default::default(),
+            phase_plus_one: Default::default(),
             net_lo: Default::default(),
             net_hi: Default::default(),
             count_reg: Default::default(),
             sat_reg: Default::default(),
             strobe_reg: Default::default(),
-            dt_limit: Default::default(),
             tick: Default::default(),
             up: Default::default(),
             down: Default::default(),
@@ -97,7 +101,6 @@ impl<const N: usize> Default for PcCounter<N> {
             msb: Constant::new((1u64 << (N - 1)).into()),
             one: Constant::new(1.into()),
             max_pos: Constant::new(((1u64 << (N - 1)) - 1).into()),
-            min_mag: Constant::new((1u64 << (N - 1)).into()),
         }
     }
 }
@@ -105,13 +108,12 @@ impl<const N: usize> Default for PcCounter<N> {
 impl<const N: usize> Logic for PcCounter<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, phase, net_lo, net_hi, count_reg, sat_reg, strobe_reg);
-        self.dt_limit.next = self.cfg_dt.val() - self.one.val();
-        if self.cfg_dt.val() == self.zero.val() {
-            self.dt_limit.next = self.zero.val();
-        }
-        self.tick.next = self.phase.q.val() >= self.dt_limit.val();
-        self.phase.d.next = self.phase.q.val() + self.one.val();
+        dff_setup!(self, clock, phase_reg, net_lo, net_hi, count_reg, sat_reg, strobe_reg);
+        // phase ≥ max(dt, 1) − 1 is phase + 1 ≥ dt (dt = 0 included): one carry chain from
+        // registers, no subtraction in front of it.
+        self.phase_plus_one.next = self.phase_reg.q.val() ^ self.one.val();
+        self.tick.next = self.phase_plus_one.val() >= self.cfg_dt.val();
+        self.phase_reg.d.next = (self.phase_plus_one.val() + self.one.val()) ^ self.one.val();
         self.up.next = self.step.val() & self.forward.val();
         self.down.next = self.step.val() & !self.forward.val();
         self.delta.next = self.one.val();
@@ -123,13 +125,13 @@ impl<const N: usize> Logic for PcCounter<N> {
         self.strobe_reg.d.next = self.tick.val();
         if self.tick.val() {
             // Publish the window that ends now; the step of this edge starts the next one.
-            self.phase.d.next = self.zero.val();
+            self.phase_reg.d.next = self.zero.val();
             self.count_reg.d.next = self.net_lo.q.val();
             self.sat_reg.d.next = !self.fits.val();
             if !self.fits.val() {
                 self.count_reg.d.next = self.max_pos.val();
                 if self.net_hi.q.val() {
-                    self.count_reg.d.next = self.min_mag.val();
+                    self.count_reg.d.next = self.msb.val();
                 }
             }
             self.net_lo.d.next = self.zero.val();
@@ -151,7 +153,7 @@ impl<const N: usize> Logic for PcCounter<N> {
             }
         }
         if self.reset.val() {
-            self.phase.d.next = self.zero.val();
+            self.phase_reg.d.next = self.zero.val();
             self.net_lo.d.next = self.zero.val();
             self.net_hi.d.next = false;
             self.count_reg.d.next = self.zero.val();

@@ -8,12 +8,19 @@
 //! interval: `restart` is high, the ts counter returns to zero and the tick of that cycle
 //! is cancelled (lines 5-7). A pulse on a tick clears Cdt and the tick then counts it to 1.
 //!
-//! dt comes from the runtime input `dt`, registered (as dt − 1, values below 2 used as 2) so
-//! that the port is not on the critical path: a change of `dt` takes effect one clock
-//! later. The comparison is `count >= dt − 1`, i.e. `count + 1 >= dt`, so that lowering dt
-//! at run time ends the interval at once instead of letting the counter run to its limit;
-//! with a constant dt it equals the paper's `clock == dt`. Cdt saturates at 2^N − 1
-//! instead of wrapping.
+//! dt comes from the runtime input `dt` (values below 2 used as 2); a change of `dt` takes
+//! effect one clock later. The comparison is `count >= dt − 1`, i.e. `count + 1 >= dt`, so
+//! that lowering dt at run time ends the interval at once instead of letting the counter
+//! run to its limit; with a constant dt it equals the paper's `clock == dt`. Cdt saturates
+//! at 2^N − 1 instead of wrapping.
+//!
+//! The comparison is made one edge ahead and registered (`due`), so that `tick` does not
+//! come out of a carry chain: it drives the enables of Table 1's registers. For the count
+//! after an edge, count' ≥ max(dt, 2) − 1 is false when the count returns to zero, and
+//! otherwise (count' = count + 1) it is count + 2 ≥ max(dt, 2), i.e. count + 2 ≥ dt (the
+//! left side is at least 2). The block therefore keeps
+//! count + 2 (`ts_plus_two`, mod 2^N) instead of the count: it wraps only at count =
+//! 2^N − 2, the largest dt − 1, where `due` is already set and the count returns to zero.
 //!
 //! `tick` and `restart` are combinational (from `lep` and the registers); `cdt` and
 //! `stalled` come from the Cdt register.
@@ -49,16 +56,17 @@ pub struct Timebase<const N: usize> {
     pub cdt: Signal<Out, Bits<N>>,
     /// Cdt has reached the zero-speed timeout.
     pub stalled: Signal<Out, Bit>,
-    pub(crate) ts_count: DFF<Bits<N>>,
+    /// The ts count + 2, mod 2^N (the count is ts_plus_two − 2).
+    pub(crate) ts_plus_two: DFF<Bits<N>>,
     cdt_count: DFF<Bits<N>>,
-    dt_limit: DFF<Bits<N>>,
+    /// count ≥ max(dt, 2) − 1 for the count and the dt of this cycle.
+    due: DFF<Bit>,
     restart_now: Signal<Local, Bit>,
     tick_now: Signal<Local, Bit>,
     cdt_after_pulse: Signal<Local, Bits<N>>,
     zero: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
-    /// The bits at or above MIN_DT_CYCLES (a power of two): dt < MIN_DT_CYCLES when none is set.
-    above_min: Constant<Bits<N>>,
+    two: Constant<Bits<N>>,
     saturated: Constant<Bits<N>>,
 }
 
@@ -74,15 +82,15 @@ impl<const N: usize> Default for Timebase<N> {
             restart: Default::default(),
             cdt: Default::default(),
             stalled: Default::default(),
-            ts_count: Default::default(),
+            ts_plus_two: Default::default(),
             cdt_count: Default::default(),
-            dt_limit: Default::default(),
+            due: Default::default(),
             restart_now: Default::default(),
             tick_now: Default::default(),
             cdt_after_pulse: Default::default(),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
-            above_min: Constant::new(above_min_dt::<N>()),
+            two: Constant::new(2.into()),
             saturated: Constant::new(((1u64 << N) - 1).into()),
         }
     }
@@ -91,23 +99,19 @@ impl<const N: usize> Default for Timebase<N> {
 impl<const N: usize> Logic for Timebase<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, ts_count, cdt_count, dt_limit);
+        dff_setup!(self, clock, ts_plus_two, cdt_count, due);
         // Line 5: a pulse after at least one tick restarts the interval.
         self.restart_now.next = self.lep.val() & (self.cdt_count.q.val() != self.zero.val());
-        // dt − 1, with dt below 2 used as 2.
-        self.dt_limit.d.next = self.dt.val() - self.one.val();
-        // dt < 2 as "no bit above bit 0": LUTs, not a comparator's carry chain in series
-        // with the subtraction.
-        if (self.dt.val() & self.above_min.val()) == self.zero.val() {
-            self.dt_limit.d.next = self.one.val();
-        }
         // Line 8/12: never in a restart cycle (the count was just set to zero, dt >= 2).
-        self.tick_now.next =
-            !self.restart_now.val() & (self.ts_count.q.val() >= self.dt_limit.q.val());
-        // count + 1 cannot overflow: the count never exceeds the largest dt − 1.
-        self.ts_count.d.next = self.ts_count.q.val() + self.one.val();
+        self.tick_now.next = !self.restart_now.val() & self.due.q.val();
+        // The next count is count + 1: due then when count + 2 ≥ max(dt, 2), i.e. when
+        // count + 2 ≥ dt (count + 2 wraps to 0 only where `due` is already set).
+        self.ts_plus_two.d.next = self.ts_plus_two.q.val() + self.one.val();
+        self.due.d.next = self.ts_plus_two.q.val() >= self.dt.val();
+        // The next count is 0, below every max(dt, 2) − 1.
         if self.restart_now.val() | self.tick_now.val() {
-            self.ts_count.d.next = self.zero.val();
+            self.ts_plus_two.d.next = self.two.val();
+            self.due.d.next = false;
         }
         // Line 11 then 13, saturating.
         self.cdt_after_pulse.next = self.cdt_count.q.val();
@@ -119,7 +123,8 @@ impl<const N: usize> Logic for Timebase<N> {
             self.cdt_count.d.next = self.cdt_after_pulse.val() + self.one.val();
         }
         if self.reset.val() {
-            self.ts_count.d.next = self.zero.val();
+            self.ts_plus_two.d.next = self.two.val();
+            self.due.d.next = false;
             self.cdt_count.d.next = self.zero.val();
         }
         self.tick.next = self.tick_now.val();

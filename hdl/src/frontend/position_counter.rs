@@ -10,9 +10,13 @@
 //!    `a`/`b` inputs, so the index edge and the step of the same encoder transition are
 //!    processed at the same edge. Both flops reset high: no index edge is seen before two
 //!    real samples of `z` have been compared.
-//! 2. Stepped position p: forward from p ≥ limit to 0, else p + 1; backward from p = 0 or
-//!    p > limit (R lowered at run time) to limit, else p − 1. The wrap is the definition of
-//!    the angle, not an overflow.
+//! 2. Stepped position p: forward from p = limit to 0, else p + 1; backward from p = 0 to
+//!    limit, else p − 1. The wrap is the definition of the angle, not an overflow. R may
+//!    change only at a reset edge (the core changes it only with the decoding mode, which
+//!    resets the core), so p ≤ limit always holds. The two tests are registered flags
+//!    (`at_zero`, `at_limit`) set for the next position from equalities on the registers
+//!    (p = 1, p = R − 2, R = 1), so that no comparison's carry chain lies in front of the
+//!    position's incrementer: the position register is one adder away from itself.
 //! 3. On rise: `cfg_z_mode` 2 or 3 latches p (this edge's step included) into `z_latch`;
 //!    `cfg_z_mode` 1 or 3 sets the position to 0 instead of p; `index` is high after the edge.
 //! 4. Revolution check. The steps since the last index edge are counted (saturating one
@@ -26,8 +30,8 @@
 //!    R steps, because the index rises on entering the Z window from either side.
 //!
 //! Ports: `step`, `forward` (from the decoder), `z` (filtered index level, one cycle ahead
-//! of `step`), `limit[C-1:0]` (R − 1), `limit_less_one[C-1:0]` (R − 2), `cfg_z_mode[1:0]` (0 ignore, 1 reset, 2 latch,
-//! 3 latch then reset). Registered outputs: `position[C-1:0]`, `z_latch[C-1:0]`, `index`
+//! of `step`), `limit[C-1:0]` (R − 1), `limit_less_one[C-1:0]` (R − 2), `cfg_z_mode[1:0]`
+//! (0 ignore, 1 reset, 2 latch, 3 latch then reset). Registered outputs: `position[C-1:0]`, `z_latch[C-1:0]`, `index`
 //! (one cycle per index edge processed), `rev_error` (sticky), `rev_error_count[G-1:0]`.
 //!
 //! Latency: a step is in `position` after the edge that samples it; an index level change
@@ -68,6 +72,10 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     /// One cycle: the last edge found a bad revolution.
     pub rev_fault: Signal<Out, Bit>,
     pub(crate) position_reg: DFF<Bits<C>>,
+    /// position ≠ 0 (stored inverted so that the power-up value agrees with position 0).
+    not_zero: DFF<Bit>,
+    /// position = limit.
+    at_limit: DFF<Bit>,
     latch_reg: DFF<Bits<C>>,
     index_reg: DFF<Bit>,
     z_delay: DFF<Bit>,
@@ -84,6 +92,11 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     /// The interval's count equals R (more_now = limit), found without forming more_now.
     count_is_rev: Signal<Local, Bit>,
     stepped: Signal<Local, Bits<C>>,
+    /// The flags of `stepped`.
+    stepped_not_zero: Signal<Local, Bit>,
+    stepped_at_limit: Signal<Local, Bit>,
+    /// R = 1: position 0 is also the limit.
+    single: Signal<Local, Bit>,
     rise: Signal<Local, Bit>,
     any_now: Signal<Local, Bit>,
     more_now: Signal<Local, Bits<C>>,
@@ -126,6 +139,8 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             rev_error_count: Default::default(),
             rev_fault: Default::default(),
             position_reg: Default::default(),
+            not_zero: Default::default(),
+            at_limit: Default::default(),
             latch_reg: Default::default(),
             index_reg: Default::default(),
             z_delay: Default::default(),
@@ -141,6 +156,9 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             fault_reg: Default::default(),
             count_is_rev: Default::default(),
             stepped: Default::default(),
+            stepped_not_zero: Default::default(),
+            stepped_at_limit: Default::default(),
+            single: Default::default(),
             rise: Default::default(),
             any_now: Default::default(),
             more_now: Default::default(),
@@ -169,6 +187,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             self,
             clock,
             position_reg,
+            not_zero,
+            at_limit,
             latch_reg,
             index_reg,
             z_delay,
@@ -187,22 +207,31 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
         self.z_delay.d.next = self.z.val();
         self.z_prev.d.next = self.z_delay.q.val();
 
-        // The stepped position, modulo R.
+        // The stepped position, modulo R, and its flags.
+        self.single.next = self.limit.val() == self.pos_zero.val();
         self.stepped.next = self.position_reg.q.val();
+        self.stepped_not_zero.next = self.not_zero.q.val();
+        self.stepped_at_limit.next = self.at_limit.q.val();
         if self.step.val() & self.forward.val() {
-            if self.position_reg.q.val() >= self.limit.val() {
+            if self.at_limit.q.val() {
                 self.stepped.next = self.pos_zero.val();
+                self.stepped_not_zero.next = false;
+                self.stepped_at_limit.next = self.single.val();
             } else {
                 self.stepped.next = self.position_reg.q.val() + self.pos_one.val();
+                self.stepped_not_zero.next = true;
+                self.stepped_at_limit.next = self.position_reg.q.val() == self.limit_less_one.val();
             }
         }
         if self.step.val() & !self.forward.val() {
-            if (self.position_reg.q.val() == self.pos_zero.val())
-                | (self.position_reg.q.val() > self.limit.val())
-            {
+            if !self.not_zero.q.val() {
                 self.stepped.next = self.limit.val();
+                self.stepped_not_zero.next = !self.single.val();
+                self.stepped_at_limit.next = true;
             } else {
                 self.stepped.next = self.position_reg.q.val() - self.pos_one.val();
+                self.stepped_not_zero.next = self.position_reg.q.val() != self.pos_one.val();
+                self.stepped_at_limit.next = false;
             }
         }
 
@@ -252,6 +281,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             & (self.over_now.val() | !self.count_is_rev.val());
 
         self.position_reg.d.next = self.stepped.val();
+        self.not_zero.d.next = self.stepped_not_zero.val();
+        self.at_limit.d.next = self.stepped_at_limit.val();
         self.index_reg.d.next = self.rise.val();
         self.fault_reg.d.next = false;
         self.rev_any.d.next = self.any_now.val();
@@ -269,6 +300,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
                 | (self.cfg_z_mode.val() == self.mode_both.val())
             {
                 self.position_reg.d.next = self.pos_zero.val();
+                self.not_zero.d.next = false;
+                self.at_limit.d.next = self.single.val();
             }
             if self.bad.val() {
                 self.error_reg.d.next = true;
@@ -285,6 +318,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
         }
         if self.reset.val() {
             self.position_reg.d.next = self.pos_zero.val();
+            self.not_zero.d.next = false;
+            self.at_limit.d.next = self.single.val();
             self.latch_reg.d.next = self.pos_zero.val();
             self.index_reg.d.next = false;
             self.z_delay.d.next = true;

@@ -5,14 +5,17 @@
 //! samples of the encoder: a filter passes a channel that is already high only after
 //! max(`cfg_filter`, 1) edges of real samples, which the decoder would take for a
 //! transition. This block holds the decoder and the position counter in reset (`front_reset`)
-//! while fewer than 2 + max(`cfg_filter`, 1) edges have passed since reset: 2 for the
-//! synchronisers, then the filter's delay. The first sample the decoder takes is then a
-//! filtered sample of the real channels (the golden rule is in `golden::top::core`).
+//! while fewer than 2 + max(`cfg_filter`, 1) edges have passed since reset (2 for the
+//! synchronisers, then the filter's delay), and for one edge more: the hold is a register
+//! (`released`, inverted), so that the comparison with the filter length does not drive
+//! the resets of the decoder and the counter in the same cycle. The first sample the decoder
+//! takes is then a filtered sample of the real channels (the golden rule is in
+//! `golden::top::core`).
 //!
 //! Registers: a 2-bit count of the synchroniser edges (saturating at 2), a 16-bit count of
-//! the edges after them (saturating at 2^16 − 1, the longest filter) and a `done` flag set
-//! when the hold first ends, so that raising `cfg_filter` later does not bring the hold
-//! back (it would reset the decoder and the position counter).
+//! the edges after them (saturating at 2^16 − 1, the longest filter), a `done` flag set
+//! when the hold rule first ends, so that raising `cfg_filter` later does not bring the hold
+//! back (it would reset the decoder and the position counter), and `released`.
 
 use golden::params::FILTER_BITS;
 use rust_hdl::prelude::*;
@@ -28,10 +31,12 @@ pub struct Startup {
     pub reset: Signal<In, Bit>,
     /// Glitch filter length L, clock cycles (0: off).
     pub cfg_filter: Signal<In, Bits<FB>>,
-    /// `reset`, or fewer than 2 + max(L, 1) edges since reset (and the hold has not ended
-    /// before): the reset of the decoder and the position counter.
+    /// `reset`, or the hold (registered: fewer than 2 + max(L, 1) edges had passed at the
+    /// edge before, and the hold had not ended): the reset of the decoder and the counter.
     pub front_reset: Signal<Out, Bit>,
     hold: Signal<Local, Bit>,
+    /// Not holding (stored inverted so that the power-up value holds, as a reset does).
+    released: DFF<Bit>,
     sync_edges: DFF<Bits<2>>,
     settle_edges: DFF<Bits<FB>>,
     done: DFF<Bit>,
@@ -51,6 +56,7 @@ impl Default for Startup {
             reset: Default::default(),
             cfg_filter: Default::default(),
             hold: Default::default(),
+            released: Default::default(),
             front_reset: Default::default(),
             sync_edges: Default::default(),
             settle_edges: Default::default(),
@@ -69,7 +75,7 @@ impl Default for Startup {
 impl Logic for Startup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, sync_edges, settle_edges, done);
+        dff_setup!(self, clock, sync_edges, settle_edges, done, released);
         // max(L, 1): a filter of 0 or 1 cycles delays a level by one edge.
         self.filter_delay.next = self.cfg_filter.val();
         if self.cfg_filter.val() == self.zero.val() {
@@ -95,9 +101,12 @@ impl Logic for Startup {
         self.hold.next = !self.done.q.val()
             & ((self.sync_edges.q.val() != self.two.val())
                 | (self.settle_edges.q.val() < self.filter_delay.val()));
-        // Combined here rather than in the core: logic of the core that read `hold` and the
-        // value it drives `reset` with would form a false loop for Verilator (UNOPTFLAT).
-        self.front_reset.next = self.reset.val() | self.hold.val();
+        // Registered: the filter-length comparison does not reach the resets of the decoder
+        // and the counter in the same cycle. Combined with `reset` here rather than in the
+        // core: logic of the core that read the hold and the value it drives `reset` with
+        // would form a false loop for Verilator (UNOPTFLAT).
+        self.released.d.next = !(self.reset.val() | self.hold.val());
+        self.front_reset.next = self.reset.val() | !self.released.q.val();
     }
 }
 
@@ -126,12 +135,13 @@ mod tests {
 
     #[test]
     fn holds_for_two_plus_the_filter_delay() {
-        // By hand: after edge k, k edges have passed; hold while k < 2 + max(L, 1).
+        // By hand: after edge j, j edges have passed; the rule holds while j < 2 + max(L, 1)
+        // and the register applies it one edge later: held after edge j while j ≤ n.
         for l in [0u64, 1, 2, 5] {
             let h = holds(l, 12);
             let n = (2 + l.max(1)) as usize;
             for (k, &held) in h.iter().enumerate() {
-                assert_eq!(held, k + 1 < n, "L = {l}, edge {}", k + 1);
+                assert_eq!(held, k < n, "L = {l}, edge {}", k + 1);
             }
         }
     }
@@ -142,13 +152,14 @@ mod tests {
         uut.connect_all();
         for k in 0..20u64 {
             uut.reset.next = k == 0;
-            // Filter 1 until edge 10 (the hold ends after edge 3), then 1000.
+            // Filter 1 until edge 10 (the rule ends after edge 3, the hold after edge 4),
+            // then 1000.
             uut.cfg_filter.next = if k < 10 { 1u64 } else { 1000 }.into();
             uut.clock.next = Clock { clk: false };
             assert!(simulate(&mut uut, 10));
             uut.clock.next = Clock { clk: true };
             assert!(simulate(&mut uut, 10));
-            assert_eq!(uut.front_reset.val(), k < 3, "after edge {k}");
+            assert_eq!(uut.front_reset.val(), k < 4, "after edge {k}");
         }
     }
 

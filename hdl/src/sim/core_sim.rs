@@ -125,7 +125,9 @@ impl<const N: usize, const P: usize, const S: usize> CoreSim for Driven<N, P, S>
     }
 
     fn ts_count(&self) -> u64 {
-        self.uut.timebase.ts_count.q.val().to_u64()
+        // The block keeps count + 2 mod 2^N.
+        let ts_plus_two = self.uut.timebase.ts_plus_two.q.val().to_u64();
+        ts_plus_two.wrapping_sub(2) & ((1u64 << N) - 1)
     }
 
     fn verilog(&self, module_name: &str) -> String {

@@ -25,7 +25,9 @@ const REV_ERROR_BITS: usize = 2;
 /// Either a virtual shaft (steps of a position modulo R with the index at position 0, `z`
 /// one cycle ahead of the step into it, as the chain delivers it; some steps dropped and
 /// some index samples flipped, so that good and bad revolutions both occur), or inputs
-/// drawn at random. R (0..=15, 0 standing for 16) and the z mode change at run time.
+/// drawn at random. R (0..=15, 0 standing for 16) and the z mode change at run time; R
+/// only with a reset, as the block requires (the core changes R only with the decoding
+/// mode, which resets it).
 fn stimulus(k: Knobs) -> Vec<CounterInputs> {
     let mut r = Rng::new(k.seed);
     let structured = r.chance(3, 4);
@@ -76,8 +78,9 @@ fn stimulus(k: Knobs) -> Vec<CounterInputs> {
                 }
                 (moved, z_level)
             };
+            let r_changed = c > 0 && moves[c - 1].2 != cpr;
             CounterInputs {
-                reset: c == 0 || r.chance(1, k.reset_every),
+                reset: c == 0 || r_changed || r.chance(1, k.reset_every),
                 step,
                 forward: if structured { fwd } else { r.chance(1, 2) },
                 z,
