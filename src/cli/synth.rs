@@ -8,7 +8,10 @@
 //! `--out` file that holds the [`BEGIN`]/[`END`] markers (docs/resources.md) keeps its text
 //! around them.
 //!
-//! `--require-timing` makes a routed Fmax below the clock, or a top that does not fit, an
+//! A seed whose router does not finish (nextpnr aborts on an internal assertion, or runs
+//! past `tools::fpga::ROUTE_TIMEOUT`: nextpnr's routers can loop for ever on some
+//! placements) is reported as "not routed" and the next seed is tried. `--require-timing`
+//! makes a routed Fmax below the clock, a seed not routed, or a top that does not fit, an
 //! error (exit 1): the static timing check CI runs.
 
 use clap::Args;
@@ -202,7 +205,8 @@ fn place_and_route(p: &Params, top: Top, device: Device, seeds: &[u32]) -> Resul
             p.clock_hz() / 1e6,
             seed,
         )?;
-        let fits = matches!(r, Routed::Done { .. });
+        // A seed whose router does not finish is reported and the next seed tried.
+        let fits = !matches!(r, Routed::DoesNotFit(_));
         routed.push((seed, r));
         if !fits {
             break; // another seed places the same cells
@@ -229,6 +233,7 @@ fn fmax_list(r: &Row) -> String {
         .map(|(seed, x)| match x {
             Routed::Done { fmax_mhz, .. } => format!("{fmax_mhz:.1} (seed {seed})"),
             Routed::DoesNotFit(_) => "does not fit".into(),
+            Routed::NotRouted(_) => format!("not routed (seed {seed})"),
         })
         .collect::<Vec<_>>()
         .join(", ")
@@ -250,8 +255,9 @@ fn print_row(r: &Row, p: &Params) {
         fmax_list(r)
     );
     for (_, x) in &r.routed {
-        if let Routed::DoesNotFit(why) = x {
-            println!("  {why}");
+        match x {
+            Routed::DoesNotFit(why) | Routed::NotRouted(why) => println!("  {why}"),
+            Routed::Done { .. } => {}
         }
     }
 }
@@ -292,9 +298,10 @@ fn markdown(p: &Params, rows: &[Row]) -> String {
         let lc = r
             .routed
             .iter()
-            .map(|(_, x)| match x {
-                Routed::Done { lc, lc_total, .. } => format!("{lc} / {lc_total}"),
-                Routed::DoesNotFit(over) => format!("does not fit: {over}"),
+            .filter_map(|(_, x)| match x {
+                Routed::Done { lc, lc_total, .. } => Some(format!("{lc} / {lc_total}")),
+                Routed::DoesNotFit(over) => Some(format!("does not fit: {over}")),
+                Routed::NotRouted(_) => None,
             })
             .next()
             .unwrap_or_default();
@@ -305,7 +312,7 @@ fn markdown(p: &Params, rows: &[Row]) -> String {
                 Routed::Done {
                     fmax_mhz, from, to, ..
                 } => Some((*fmax_mhz, from, to)),
-                Routed::DoesNotFit(_) => None,
+                Routed::DoesNotFit(_) | Routed::NotRouted(_) => None,
             })
             .min_by(|a, b| a.0.total_cmp(&b.0))
             .map(|(_, from, to)| format!("`{from}` → `{to}`"))

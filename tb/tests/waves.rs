@@ -36,7 +36,8 @@ fn vcd_holds_ports_and_internal_counters_of_every_cycle() {
         "uut.nep",
         "uut.ndt",
         "uut.update",
-        "uut.timebase.ts_count.q",
+        // The block keeps the ts count + 2, mod 2^12 (its tick is compared an edge early).
+        "uut.timebase.ts_plus_two.q",
         "uut.timebase.cdt_count.q",
         "uut.table1.cep.q",
     ];
@@ -55,7 +56,7 @@ fn vcd_holds_ports_and_internal_counters_of_every_cycle() {
             o.nep,
             o.ndt,
             o.update as u64,
-            s.clock,
+            (s.clock + 2) % (1 << 12),
             s.cdt,
             s.cep,
         ];

@@ -224,7 +224,15 @@ pub enum Routed {
     },
     /// The design needs more cells of some kind than the device has: nextpnr's message.
     DoesNotFit(String),
+    /// The design fits, but nextpnr's router did not finish for this seed: it aborted on
+    /// an internal assertion, or it ran past [`ROUTE_TIMEOUT`] (nextpnr's routers can loop
+    /// for ever on a few arcs of some placements). The reason, with the log's last line.
+    NotRouted(String),
 }
+
+/// Longest place-and-route run before it counts as a router that does not converge. A
+/// normal run takes a few minutes on the 2-core CI machine.
+pub const ROUTE_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(20 * 60);
 
 /// nextpnr-ice40 `--<device> --package <package>` of `json` in `dir`, clock `clock`
 /// constrained to `mhz`, placement seed `seed`; unconstrained pins, timing failures
@@ -240,29 +248,72 @@ pub fn nextpnr_ice40(
     let clock = dir.join("clock.py");
     std::fs::write(&clock, format!("ctx.addClock(\"clock\", {mhz})\n"))
         .map_err(|e| format!("{}: {e}", clock.display()))?;
-    let out = Command::new("nextpnr-ice40")
+    // The log goes to a file (it can run to millions of lines when the router loops), and
+    // the run is waited for with a time limit.
+    let log_path = dir.join(format!("nextpnr-seed{seed}.log"));
+    let log_file =
+        std::fs::File::create(&log_path).map_err(|e| format!("{}: {e}", log_path.display()))?;
+    let err_file = log_file
+        .try_clone()
+        .map_err(|e| format!("{}: {e}", log_path.display()))?;
+    let mut child = Command::new("nextpnr-ice40")
         .current_dir(dir)
         .arg(format!("--{device}"))
         .args(["--package", package, "--json", json])
         .args(["--pcf-allow-unconstrained", "--timing-allow-fail"])
         .args(["--seed", &seed.to_string(), "--pre-pack", "clock.py"])
-        .output()
+        .stdout(log_file)
+        .stderr(err_file)
+        .spawn()
         .map_err(|e| format!("cannot run nextpnr-ice40: {e} (install it: see .ci/run)"))?;
-    let log =
-        String::from_utf8_lossy(&out.stderr).into_owned() + &String::from_utf8_lossy(&out.stdout);
-    if !out.status.success() {
-        if let Some(over) = over_capacity(&log) {
-            return Ok(Routed::DoesNotFit(over));
+    let started = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
+            break Some(status);
         }
-        // The log runs to thousands of lines of timing budgets: its end says what failed.
-        let lines: Vec<&str> = log.lines().collect();
+        if started.elapsed() > ROUTE_TIMEOUT {
+            // Killing a process that has just exited fails harmlessly.
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(500));
+    };
+    let log = std::fs::read(&log_path).map_err(|e| format!("{}: {e}", log_path.display()))?;
+    let log = String::from_utf8_lossy(&log);
+    // The log runs to thousands of lines of timing budgets: its end says what failed.
+    let lines: Vec<&str> = log.lines().collect();
+    let last = lines.last().copied().unwrap_or("").trim();
+    let Some(status) = status else {
+        return Ok(Routed::NotRouted(format!(
+            "no result after {} min, the router still running (`{last}`)",
+            ROUTE_TIMEOUT.as_secs() / 60
+        )));
+    };
+    if !status.success() {
+        if let Some(r) = failed_run(&log) {
+            return Ok(r);
+        }
         let tail = lines[lines.len().saturating_sub(20)..].join("\n");
         return Err(format!(
-            "nextpnr-ice40 failed ({}); the log ends:\n{tail}",
-            out.status
+            "nextpnr-ice40 failed ({status}); the log ends:\n{tail}"
         ));
     }
     parse_nextpnr(&log)
+}
+
+/// What the log of a failed nextpnr run says, when it is a result rather than an error:
+/// the design does not fit, or the router aborted on an internal assertion.
+pub fn failed_run(log: &str) -> Option<Routed> {
+    if let Some(over) = over_capacity(log) {
+        return Some(Routed::DoesNotFit(over));
+    }
+    log.lines()
+        .find(|l| l.contains("Assertion failure"))
+        .map(|a| {
+            let a = a.trim().trim_start_matches("what():").trim();
+            Routed::NotRouted(format!("nextpnr aborted: {a}"))
+        })
 }
 
 /// The resources a design uses beyond the device's in a nextpnr log: its utilisation lines
@@ -376,6 +427,29 @@ mod tests {
         \x20   output reg  [3:0] q;\n    output reg  r;\n    \n    // Stub signals\n\
         \x20   reg x;\n\
         always @(posedge clock) begin q <= b[3:0] + b[7:4]; r <= a ^ b[7]; end\nendmodule\n";
+
+    /// The end of a real log of nextpnr-ice40 0.4 whose router1 looped and then aborted
+    /// (encspeed_core, HX8K, during this work), and a log of a design too large.
+    #[test]
+    fn failed_runs_are_classified() {
+        let aborted = "Info:   21478000 | 21474927       3072 | 1000     0 |     12122|\n\
+            terminate called after throwing an instance of 'nextpnr_ice40::assertion_failure'\n\
+            \x20 what():  Assertion failure: next_score >= 0 (./common/route/router1.cc:656)\n";
+        assert_eq!(
+            failed_run(aborted),
+            Some(Routed::NotRouted(
+                "nextpnr aborted: Assertion failure: next_score >= 0 \
+                 (./common/route/router1.cc:656)"
+                    .into()
+            ))
+        );
+        let big = "Info: Device utilisation:\nInfo: \t         ICESTORM_LC:  6402/ 5280   121%\n";
+        assert_eq!(
+            failed_run(big),
+            Some(Routed::DoesNotFit("ICESTORM_LC: 6402 of 5280".into()))
+        );
+        assert_eq!(failed_run("ERROR: something else\n"), None);
+    }
 
     #[test]
     fn module_ports_reads_rust_hdl_declarations() {
