@@ -303,10 +303,20 @@ pub fn nextpnr_ice40(
 }
 
 /// What the log of a failed nextpnr run says, when it is a result rather than an error:
-/// the design does not fit, or the router aborted on an internal assertion.
+/// the design does not fit (more cells than the device has, or so close to its size that
+/// the placer finds no legal placement), or the router aborted on an internal assertion.
 pub fn failed_run(log: &str) -> Option<Routed> {
     if let Some(over) = over_capacity(log) {
         return Some(Routed::DoesNotFit(over));
+    }
+    if log.contains("Unable to find legal placement") {
+        let used = log
+            .lines()
+            .map(|l| l.trim().trim_start_matches("Info:").trim())
+            .find(|l| l.starts_with("ICESTORM_LC:"))
+            .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+            .unwrap_or_default();
+        return Some(Routed::DoesNotFit(format!("no legal placement at {used}")));
     }
     log.lines()
         .find(|l| l.contains("Assertion failure"))
@@ -447,6 +457,16 @@ mod tests {
         assert_eq!(
             failed_run(big),
             Some(Routed::DoesNotFit("ICESTORM_LC: 6402 of 5280".into()))
+        );
+        // encspeed_core on the UP5K at c934ea8: 99 % of the logic cells, no placement.
+        let full = "Info: \t         ICESTORM_LC:  5269/ 5280    99%\n\
+            ERROR: Unable to find legal placement for all cells, design is probably at \
+            utilisation limit.\n";
+        assert_eq!(
+            failed_run(full),
+            Some(Routed::DoesNotFit(
+                "no legal placement at ICESTORM_LC: 5269/ 5280 99%".into()
+            ))
         );
         assert_eq!(failed_run("ERROR: something else\n"), None);
     }
