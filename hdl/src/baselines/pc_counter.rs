@@ -6,7 +6,8 @@
 //! Per clock edge (N = counter width, 2..=32):
 //! - time base: `tick` = phase ≥ max(`cfg_dt`, 1) − 1; phase ← 0 on a tick, else + 1. Steps
 //!   never restart it (with a constant dt D the ticks are edges D, 2D, … after reset). The
-//!   register holds phase + 1 and the test is phase + 1 ≥ `cfg_dt`: one carry chain;
+//!   register holds phase + 1 with bit 0 inverted (0 is phase 0 at power-up and reset) and
+//!   the test is phase + 1 ≥ `cfg_dt`: one carry chain;
 //! - the net steps f − b of the window [tick, next tick) (forward minus backward): the step
 //!   of a tick edge starts the next window (`golden::ideal::fixed_time`'s convention). A
 //!   window is at most 2^N − 1 edges, so f − b fits N + 1 bits of two's complement: one
