@@ -1019,8 +1019,8 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         pc$forward = decoder$forward;
         et$forward = decoder$forward;
         mt$forward = decoder$forward;
-        pc$cfg_dt = dt_reg$q;
-        mt$cfg_dt = dt_reg$q;
+        pc$cfg_dt = dt_eff;
+        mt$cfg_dt = dt_eff;
         et_have$d = ~engine_reset & (et_have$q | et$strobe);
         baseline$reset = rst;
         baseline$start = pc$strobe;
@@ -1114,10 +1114,11 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     localparam  count_one = 6'b1;
     localparam  count_first = 6'b101000;
     localparam  count_mul_end = 6'b10000;
-    localparam  st_idle = 2'b0;
-    localparam  st_step = 2'b1;
-    localparam  st_setup = 2'b10;
-    localparam  st_finish = 2'b11;
+    localparam  st_idle = 3'b0;
+    localparam  st_step = 3'b1;
+    localparam  st_setup = 3'b10;
+    localparam  st_finish = 3'b11;
+    localparam  st_output = 3'b100;
     
     // Stub signals
     reg  [23:0] req_pc$d;
@@ -1177,8 +1178,8 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     reg  w_mt_sat$d;
     wire  w_mt_sat$q;
     reg  w_mt_sat$clock;
-    reg  [1:0] state$d;
-    wire  [1:0] state$q;
+    reg  [2:0] state$d;
+    wire  [2:0] state$q;
     reg  state$clock;
     reg  phase$d;
     wire  phase$q;
@@ -1207,6 +1208,9 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     reg  [40:0] stage_et$d;
     wire  [40:0] stage_et$q;
     reg  stage_et$clock;
+    reg  et_rounding$d;
+    wire  et_rounding$q;
+    reg  et_rounding$clock;
     reg  [40:0] out_pc$d;
     wire  [40:0] out_pc$q;
     reg  out_pc$clock;
@@ -1224,6 +1228,11 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     reg  [23:0] div$den;
     wire  [23:0] div$next_rem;
     wire  div$fits;
+    reg  round_add$clock;
+    reg  [40:0] round_add$a;
+    reg  [40:0] round_add$b;
+    reg  round_add$carry_in;
+    wire  [40:0] round_add$sum;
     
     // Local signals
     reg  take;
@@ -1248,7 +1257,6 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     reg  [40:0] half;
     reg  round_bit;
     reg  [40:0] addend;
-    reg  [40:0] rounded;
     reg  pc_sign;
     reg  [40:0] pc_speed;
     
@@ -1398,6 +1406,11 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         .q(stage_et$q),
         .clock(stage_et$clock)
     );
+    encspeed_wb$core$baseline$et_rounding et_rounding(
+        .d(et_rounding$d),
+        .q(et_rounding$q),
+        .clock(et_rounding$clock)
+    );
     encspeed_wb$core$baseline$out_pc out_pc(
         .d(out_pc$d),
         .q(out_pc$q),
@@ -1424,6 +1437,13 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         .den(div$den),
         .next_rem(div$next_rem),
         .fits(div$fits)
+    );
+    encspeed_wb$core$baseline$round_add round_add(
+        .clock(round_add$clock),
+        .a(round_add$a),
+        .b(round_add$b),
+        .carry_in(round_add$carry_in),
+        .sum(round_add$sum)
     );
     
     // Update code
@@ -1457,6 +1477,7 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         den$clock = clock;
         dq$clock = clock;
         stage_et$clock = clock;
+        et_rounding$clock = clock;
         out_pc$clock = clock;
         out_et$clock = clock;
         out_mt$clock = clock;
@@ -1490,6 +1511,7 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         den$d = den$q;
         dq$d = dq$q;
         stage_et$d = stage_et$q;
+        et_rounding$d = et_rounding$q;
         out_pc$d = out_pc$q;
         out_et$d = out_et$q;
         out_mt$d = out_mt$q;
@@ -1709,10 +1731,10 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         if (sel_neg) begin
             addend = ~half;
         end
-        rounded = addend;
-        if (round_bit ^ sel_neg) begin
-            rounded = addend + s_one;
-        end
+        round_add$clock = clock;
+        round_add$a = addend;
+        round_add$b = s_zero;
+        round_add$carry_in = round_bit ^ sel_neg;
         pc_sign = (w_pc$q & n_msb) != n_zero;
         pc_speed = s_zero;
         if (w_pc$q[0]) begin
@@ -1882,6 +1904,10 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
             end
         end
         valid_reg$d = 1'b0;
+        et_rounding$d = state$q == st_setup;
+        if (et_rounding$q) begin
+            stage_et$d = round_add$sum;
+        end
         if (take | (state$q == st_setup)) begin
             part_rem$d = load_rem;
             dq$d = load_dq;
@@ -1906,7 +1932,6 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         end
         if (state$q == st_setup) begin
             den$d = w_t$q;
-            stage_et$d = rounded;
             w_mt_sat$d = load_rem >= w_t$q;
             phase$d = 1'b1;
         end
@@ -1935,9 +1960,12 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
             end
         end
         if (state$q == st_finish) begin
+            state$d = st_output;
+        end
+        if (state$q == st_output) begin
             out_pc$d = pc_speed;
             out_et$d = stage_et$q;
-            out_mt$d = rounded;
+            out_mt$d = round_add$sum;
             valid_reg$d = 1'b1;
             state$d = st_idle;
         end
@@ -1957,6 +1985,7 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
             pending$d = 1'b0;
             state$d = st_idle;
             valid_reg$d = 1'b0;
+            et_rounding$d = 1'b0;
             out_pc$d = s_zero;
             out_et$d = s_zero;
             out_mt$d = s_zero;
@@ -2070,6 +2099,25 @@ module encspeed_wb$core$baseline$dq(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$baseline$dq
+
+
+module encspeed_wb$core$baseline$et_rounding(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$et_rounding
 
 
 module encspeed_wb$core$baseline$mul_a(d,q,clock);
@@ -2414,6 +2462,145 @@ module encspeed_wb$core$baseline$req_t(d,q,clock);
 endmodule // encspeed_wb$core$baseline$req_t
 
 
+module encspeed_wb$core$baseline$round_add(clock,a,b,carry_in,sum);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [40:0] a;
+    input wire  [40:0] b;
+    input wire  carry_in;
+    output reg  [40:0] sum;
+    
+    // Constant declarations
+    localparam  zero = 41'h0;
+    localparam  one = 41'h1;
+    localparam  low_mask = 41'h1fffff;
+    localparam  low_carry = 41'h400000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_low = 8'h15;
+    
+    // Stub signals
+    reg  [40:0] low$d;
+    wire  [40:0] low$q;
+    reg  low$clock;
+    reg  [40:0] high_a_reg$d;
+    wire  [40:0] high_a_reg$q;
+    reg  high_a_reg$clock;
+    reg  [40:0] high_b_reg$d;
+    wire  [40:0] high_b_reg$q;
+    reg  high_b_reg$clock;
+    
+    // Local signals
+    reg  [40:0] low_a;
+    reg  [40:0] low_b;
+    reg  mid_carry;
+    reg  [40:0] high_a;
+    reg  [40:0] high_b;
+    reg  [40:0] high_sum;
+    
+    // Sub module instances
+    encspeed_wb$core$baseline$round_add$low low(
+        .d(low$d),
+        .q(low$q),
+        .clock(low$clock)
+    );
+    encspeed_wb$core$baseline$round_add$high_a_reg high_a_reg(
+        .d(high_a_reg$d),
+        .q(high_a_reg$q),
+        .clock(high_a_reg$clock)
+    );
+    encspeed_wb$core$baseline$round_add$high_b_reg high_b_reg(
+        .d(high_b_reg$d),
+        .q(high_b_reg$q),
+        .clock(high_b_reg$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        low$clock = clock;
+        high_a_reg$clock = clock;
+        high_b_reg$clock = clock;
+        low$d = low$q;
+        high_a_reg$d = high_a_reg$q;
+        high_b_reg$d = high_b_reg$q;
+        low_a = (a & low_mask) << sh_one;
+        if (carry_in) begin
+            low_a = ((a & low_mask) << sh_one) | one;
+        end
+        low_b = ((b & low_mask) << sh_one) | one;
+        low$d = low_a + low_b;
+        mid_carry = (low$q & low_carry) != zero;
+        high_a_reg$d = a >> sh_low;
+        high_b_reg$d = b >> sh_low;
+        high_a = high_a_reg$q << sh_one;
+        if (mid_carry) begin
+            high_a = (high_a_reg$q << sh_one) | one;
+        end
+        high_b = (high_b_reg$q << sh_one) | one;
+        high_sum = high_a + high_b;
+        sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
+    end
+    
+endmodule // encspeed_wb$core$baseline$round_add
+
+
+module encspeed_wb$core$baseline$round_add$high_a_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$round_add$high_a_reg
+
+
+module encspeed_wb$core$baseline$round_add$high_b_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$round_add$high_b_reg
+
+
+module encspeed_wb$core$baseline$round_add$low(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$round_add$low
+
+
 module encspeed_wb$core$baseline$stage_et(d,q,clock);
     
     // Module arguments
@@ -2436,13 +2623,13 @@ endmodule // encspeed_wb$core$baseline$stage_et
 module encspeed_wb$core$baseline$state(d,q,clock);
     
     // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 2'h0;
+       q = 3'h0;
     end
     
     always @(posedge clock) begin
@@ -3703,21 +3890,19 @@ module encspeed_wb$core$calc$div_sub(clock,a,b,carry_in,sum);
         high_a_reg$d = high_a_reg$q;
         high_b_reg$d = high_b_reg$q;
         low_a = (a & low_mask) << sh_one;
-        low_b = (b & low_mask) << sh_one;
         if (carry_in) begin
             low_a = ((a & low_mask) << sh_one) | one;
-            low_b = ((b & low_mask) << sh_one) | one;
         end
+        low_b = ((b & low_mask) << sh_one) | one;
         low$d = low_a + low_b;
         mid_carry = (low$q & low_carry) != zero;
         high_a_reg$d = a >> sh_low;
         high_b_reg$d = b >> sh_low;
         high_a = high_a_reg$q << sh_one;
-        high_b = high_b_reg$q << sh_one;
         if (mid_carry) begin
             high_a = (high_a_reg$q << sh_one) | one;
-            high_b = (high_b_reg$q << sh_one) | one;
         end
+        high_b = (high_b_reg$q << sh_one) | one;
         high_sum = high_a + high_b;
         sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
     end
@@ -3844,21 +4029,19 @@ module encspeed_wb$core$calc$mul_den(clock,a,b,carry_in,sum);
         high_a_reg$d = high_a_reg$q;
         high_b_reg$d = high_b_reg$q;
         low_a = (a & low_mask) << sh_one;
-        low_b = (b & low_mask) << sh_one;
         if (carry_in) begin
             low_a = ((a & low_mask) << sh_one) | one;
-            low_b = ((b & low_mask) << sh_one) | one;
         end
+        low_b = ((b & low_mask) << sh_one) | one;
         low$d = low_a + low_b;
         mid_carry = (low$q & low_carry) != zero;
         high_a_reg$d = a >> sh_low;
         high_b_reg$d = b >> sh_low;
         high_a = high_a_reg$q << sh_one;
-        high_b = high_b_reg$q << sh_one;
         if (mid_carry) begin
             high_a = (high_a_reg$q << sh_one) | one;
-            high_b = (high_b_reg$q << sh_one) | one;
         end
+        high_b = (high_b_reg$q << sh_one) | one;
         high_sum = high_a + high_b;
         sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
     end
@@ -3985,21 +4168,19 @@ module encspeed_wb$core$calc$mul_num(clock,a,b,carry_in,sum);
         high_a_reg$d = high_a_reg$q;
         high_b_reg$d = high_b_reg$q;
         low_a = (a & low_mask) << sh_one;
-        low_b = (b & low_mask) << sh_one;
         if (carry_in) begin
             low_a = ((a & low_mask) << sh_one) | one;
-            low_b = ((b & low_mask) << sh_one) | one;
         end
+        low_b = ((b & low_mask) << sh_one) | one;
         low$d = low_a + low_b;
         mid_carry = (low$q & low_carry) != zero;
         high_a_reg$d = a >> sh_low;
         high_b_reg$d = b >> sh_low;
         high_a = high_a_reg$q << sh_one;
-        high_b = high_b_reg$q << sh_one;
         if (mid_carry) begin
             high_a = (high_a_reg$q << sh_one) | one;
-            high_b = (high_b_reg$q << sh_one) | one;
         end
+        high_b = (high_b_reg$q << sh_one) | one;
         high_sum = high_a + high_b;
         sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
     end
@@ -4392,21 +4573,19 @@ module encspeed_wb$core$calc$round_add(clock,a,b,carry_in,sum);
         high_a_reg$d = high_a_reg$q;
         high_b_reg$d = high_b_reg$q;
         low_a = (a & low_mask) << sh_one;
-        low_b = (b & low_mask) << sh_one;
         if (carry_in) begin
             low_a = ((a & low_mask) << sh_one) | one;
-            low_b = ((b & low_mask) << sh_one) | one;
         end
+        low_b = ((b & low_mask) << sh_one) | one;
         low$d = low_a + low_b;
         mid_carry = (low$q & low_carry) != zero;
         high_a_reg$d = a >> sh_low;
         high_b_reg$d = b >> sh_low;
         high_a = high_a_reg$q << sh_one;
-        high_b = high_b_reg$q << sh_one;
         if (mid_carry) begin
             high_a = (high_a_reg$q << sh_one) | one;
-            high_b = (high_b_reg$q << sh_one) | one;
         end
+        high_b = (high_b_reg$q << sh_one) | one;
         high_sum = high_a + high_b;
         sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
     end
@@ -6961,9 +7140,10 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     localparam  max = 24'hffffff;
     
     // Stub signals
-    reg  [23:0] phase_reg$d;
-    wire  [23:0] phase_reg$q;
-    reg  phase_reg$clock;
+    reg  timer$clock;
+    reg  timer$reset;
+    reg  [23:0] timer$cfg_dt;
+    wire  timer$tick;
     reg  anchored$d;
     wire  anchored$q;
     reg  anchored$clock;
@@ -6999,7 +7179,6 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     reg  strobe_reg$clock;
     
     // Local signals
-    reg  [23:0] phase_plus_one;
     reg  tick;
     reg  rev;
     reg  cont;
@@ -7012,10 +7191,11 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     reg  [23:0] last_now;
     
     // Sub module instances
-    encspeed_wb$core$mt$phase_reg phase_reg(
-        .d(phase_reg$d),
-        .q(phase_reg$q),
-        .clock(phase_reg$clock)
+    encspeed_wb$core$mt$timer timer(
+        .clock(timer$clock),
+        .reset(timer$reset),
+        .cfg_dt(timer$cfg_dt),
+        .tick(timer$tick)
     );
     encspeed_wb$core$mt$anchored anchored(
         .d(anchored$d),
@@ -7075,7 +7255,6 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
     
     // Update code
     always @(*) begin
-        phase_reg$clock = clock;
         anchored$clock = clock;
         have_dir$clock = clock;
         dir$clock = clock;
@@ -7087,7 +7266,6 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
         t_reg$clock = clock;
         neg_reg$clock = clock;
         strobe_reg$clock = clock;
-        phase_reg$d = phase_reg$q;
         anchored$d = anchored$q;
         have_dir$d = have_dir$q;
         dir$d = dir$q;
@@ -7099,12 +7277,10 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
         t_reg$d = t_reg$q;
         neg_reg$d = neg_reg$q;
         strobe_reg$d = strobe_reg$q;
-        phase_plus_one = phase_reg$q ^ one;
-        tick = phase_plus_one >= cfg_dt;
-        phase_reg$d = (phase_plus_one + one) ^ one;
-        if (tick) begin
-            phase_reg$d = zero;
-        end
+        timer$clock = clock;
+        timer$reset = reset;
+        timer$cfg_dt = cfg_dt;
+        tick = timer$tick;
         m_inc = m_count$q + one;
         if (m_count$q == max) begin
             m_inc = max;
@@ -7161,7 +7337,6 @@ module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,s
             dir$d = forward;
         end
         if (reset) begin
-            phase_reg$d = zero;
             anchored$d = 1'b0;
             have_dir$d = 1'b0;
             dir$d = 1'b0;
@@ -7336,25 +7511,6 @@ module encspeed_wb$core$mt$neg_reg(d,q,clock);
 endmodule // encspeed_wb$core$mt$neg_reg
 
 
-module encspeed_wb$core$mt$phase_reg(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$mt$phase_reg
-
-
 module encspeed_wb$core$mt$span(d,q,clock);
     
     // Module arguments
@@ -7412,6 +7568,102 @@ module encspeed_wb$core$mt$t_reg(d,q,clock);
 endmodule // encspeed_wb$core$mt$t_reg
 
 
+module encspeed_wb$core$mt$timer(clock,reset,cfg_dt,tick);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [23:0] cfg_dt;
+    output reg  tick;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  two = 24'h2;
+    localparam  above_one = 24'hfffffe;
+    
+    // Stub signals
+    reg  [23:0] plus_two_reg$d;
+    wire  [23:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  due$d;
+    wire  due$q;
+    reg  due$clock;
+    
+    // Local signals
+    reg  [23:0] plus_two;
+    reg  dt_at_most_one;
+    
+    // Sub module instances
+    encspeed_wb$core$mt$timer$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_wb$core$mt$timer$due due(
+        .d(due$d),
+        .q(due$q),
+        .clock(due$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        plus_two_reg$clock = clock;
+        due$clock = clock;
+        plus_two_reg$d = plus_two_reg$q;
+        due$d = due$q;
+        plus_two = plus_two_reg$q ^ two;
+        dt_at_most_one = (cfg_dt & above_one) == zero;
+        plus_two_reg$d = (plus_two + one) ^ two;
+        due$d = plus_two >= cfg_dt;
+        if (due$q | reset) begin
+            plus_two_reg$d = zero;
+            due$d = dt_at_most_one;
+        end
+        tick = due$q;
+    end
+    
+endmodule // encspeed_wb$core$mt$timer
+
+
+module encspeed_wb$core$mt$timer$due(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$mt$timer$due
+
+
+module encspeed_wb$core$mt$timer$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$mt$timer$plus_two_reg
+
+
 module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strobe);
     
     // Module arguments
@@ -7432,9 +7684,10 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     localparam  max_pos = 24'h7fffff;
     
     // Stub signals
-    reg  [23:0] phase_reg$d;
-    wire  [23:0] phase_reg$q;
-    reg  phase_reg$clock;
+    reg  timer$clock;
+    reg  timer$reset;
+    reg  [23:0] timer$cfg_dt;
+    wire  timer$tick;
     reg  [23:0] net_lo$d;
     wire  [23:0] net_lo$q;
     reg  net_lo$clock;
@@ -7452,7 +7705,6 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     reg  strobe_reg$clock;
     
     // Local signals
-    reg  [23:0] phase_plus_one;
     reg  tick;
     reg  up;
     reg  down;
@@ -7460,10 +7712,11 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     reg  fits;
     
     // Sub module instances
-    encspeed_wb$core$pc$phase_reg phase_reg(
-        .d(phase_reg$d),
-        .q(phase_reg$q),
-        .clock(phase_reg$clock)
+    encspeed_wb$core$pc$timer timer(
+        .clock(timer$clock),
+        .reset(timer$reset),
+        .cfg_dt(timer$cfg_dt),
+        .tick(timer$tick)
     );
     encspeed_wb$core$pc$net_lo net_lo(
         .d(net_lo$d),
@@ -7493,21 +7746,20 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
     
     // Update code
     always @(*) begin
-        phase_reg$clock = clock;
         net_lo$clock = clock;
         net_hi$clock = clock;
         count_reg$clock = clock;
         sat_reg$clock = clock;
         strobe_reg$clock = clock;
-        phase_reg$d = phase_reg$q;
         net_lo$d = net_lo$q;
         net_hi$d = net_hi$q;
         count_reg$d = count_reg$q;
         sat_reg$d = sat_reg$q;
         strobe_reg$d = strobe_reg$q;
-        phase_plus_one = phase_reg$q ^ one;
-        tick = phase_plus_one >= cfg_dt;
-        phase_reg$d = (phase_plus_one + one) ^ one;
+        timer$clock = clock;
+        timer$reset = reset;
+        timer$cfg_dt = cfg_dt;
+        tick = timer$tick;
         up = step & forward;
         down = step & ~forward;
         delta = one;
@@ -7517,7 +7769,6 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
         fits = ~(net_hi$q ^ ((net_lo$q & msb) != zero));
         strobe_reg$d = tick;
         if (tick) begin
-            phase_reg$d = zero;
             count_reg$d = net_lo$q;
             sat_reg$d = ~fits;
             if (~fits) begin
@@ -7543,7 +7794,6 @@ module encspeed_wb$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strob
             end
         end
         if (reset) begin
-            phase_reg$d = zero;
             net_lo$d = zero;
             net_hi$d = 1'b0;
             count_reg$d = zero;
@@ -7615,25 +7865,6 @@ module encspeed_wb$core$pc$net_lo(d,q,clock);
 endmodule // encspeed_wb$core$pc$net_lo
 
 
-module encspeed_wb$core$pc$phase_reg(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$pc$phase_reg
-
-
 module encspeed_wb$core$pc$sat_reg(d,q,clock);
     
     // Module arguments
@@ -7670,6 +7901,102 @@ module encspeed_wb$core$pc$strobe_reg(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$pc$strobe_reg
+
+
+module encspeed_wb$core$pc$timer(clock,reset,cfg_dt,tick);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [23:0] cfg_dt;
+    output reg  tick;
+    
+    // Constant declarations
+    localparam  zero = 24'h0;
+    localparam  one = 24'h1;
+    localparam  two = 24'h2;
+    localparam  above_one = 24'hfffffe;
+    
+    // Stub signals
+    reg  [23:0] plus_two_reg$d;
+    wire  [23:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  due$d;
+    wire  due$q;
+    reg  due$clock;
+    
+    // Local signals
+    reg  [23:0] plus_two;
+    reg  dt_at_most_one;
+    
+    // Sub module instances
+    encspeed_wb$core$pc$timer$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_wb$core$pc$timer$due due(
+        .d(due$d),
+        .q(due$q),
+        .clock(due$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        plus_two_reg$clock = clock;
+        due$clock = clock;
+        plus_two_reg$d = plus_two_reg$q;
+        due$d = due$q;
+        plus_two = plus_two_reg$q ^ two;
+        dt_at_most_one = (cfg_dt & above_one) == zero;
+        plus_two_reg$d = (plus_two + one) ^ two;
+        due$d = plus_two >= cfg_dt;
+        if (due$q | reset) begin
+            plus_two_reg$d = zero;
+            due$d = dt_at_most_one;
+        end
+        tick = due$q;
+    end
+    
+endmodule // encspeed_wb$core$pc$timer
+
+
+module encspeed_wb$core$pc$timer$due(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$pc$timer$due
+
+
+module encspeed_wb$core$pc$timer$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$pc$timer$plus_two_reg
 
 
 module encspeed_wb$core$position_before(d,q,clock);

@@ -92,8 +92,9 @@ fn pc_dt_changes_and_zero() {
     let o2 = c.step(PcInputs::default());
     assert!(o1.strobe && o2.strobe);
     assert_eq!((o1.count, o2.count), (0, 1));
-    // dt = 10 for 6 edges (phase 6 after edge 6), then dt = 3: phase 6 ≥ 2 ends the window
-    // at edge 7 at once.
+    // dt = 10 for 6 edges (phase 6 after edge 6), then dt = 3, sampled at edge 7: the
+    // phase after it, 7 ≥ 3 − 1, ends the window at edge 8 (a dt change acts one edge
+    // later), then every 3 edges.
     let mut c = PcCounter::new(8);
     let mut ends = vec![];
     for k in 0..=12u64 {
@@ -106,7 +107,7 @@ fn pc_dt_changes_and_zero() {
             ends.push(k);
         }
     }
-    assert_eq!(ends, vec![7, 10]);
+    assert_eq!(ends, vec![8, 11]);
 }
 
 fn run_et(bits: u32, edges_to: u64, steps: &[(u64, (bool, bool))]) -> Vec<(u64, EtOutputs)> {

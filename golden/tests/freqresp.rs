@@ -543,19 +543,19 @@ fn hardware_latency_and_read_instant_by_hand() {
     // 3600 r/min, T_s = 1 ms, 1 MHz: dt = 1000 cycles. Counter width N by hand: dt and
     // the timeout of 1000 dt need 10 bits, +1 = 11; the ET period at the slowest speed is
     // 60/(500·3605.09·0.98) s = 33.97 cycles, rounded up plus 2 = 36, and 2·(1000 + 36) =
-    // 2072 needs 12 bits, +1 = 13. The baseline block takes L = 2·(N + F + 1) + 3 =
-    // 2·30 + 3 = 63 edges (F = 16). A level sampled at cycle c reaches the counters 4 edges
+    // 2072 needs 12 bits, +1 = 13. The baseline block takes L = 2·(N + F + 1) + 4 =
+    // 2·30 + 4 = 64 edges (F = 16). A level sampled at cycle c reaches the counters 4 edges
     // later (docs/ports.md); the time base ticks at edge T; PC's window ends with the step
     // of edge T − 1, ET's and M/T's with that of edge T; the block starts at T + 1 and
-    // publishes at T + 1 + L. So D = 63 + 1 + 4 + 1 = 69 cycles for PC, 68 for ET and
-    // M/T, and the strobe is at cycle k·dt + 3 + 63 (the time base leaves 3 cycles of
+    // publishes at T + 1 + L. So D = 64 + 1 + 4 + 1 = 70 cycles for PC, 69 for ET and
+    // M/T, and the strobe is at cycle k·dt + 3 + 64 (the time base leaves 3 cycles of
     // reset with its phase at 0, so T = k·dt + 2).
     use Estimator::{Et, Mt, Pc};
-    for (est, d) in [(Pc, 69u64), (Et, 68), (Mt, 68)] {
+    for (est, d) in [(Pc, 70u64), (Et, 69), (Mt, 69)] {
         let e = exp(hw(est, 3600.0, 1e-3));
         assert_eq!(e.core_params().unwrap().counter_bits(), 13, "{est}");
         assert_eq!(e.hardware_latency_cycles(), Some(d), "{est}");
-        assert_eq!(e.read_offset_cycles(), 66, "{est}");
+        assert_eq!(e.read_offset_cycles(), 67, "{est}");
         let op = *e.operating_point();
         let paper = match est {
             Pc => FreqModel::Product(pc_model(&op)),

@@ -64,7 +64,7 @@
 //! marks it pending; a start while busy replaces a request that has not begun, so the
 //! **last** start's values are always computed. At the first edge at which the block is idle
 //! and a request is pending it takes the request; [`latency_cycles`]`(N, F)` =
-//! 2·(N + F + 1) + 3 edges after a start edge (block idle) the three outputs change together
+//! 2·(N + F + 1) + 4 edges after a start edge (block idle) the three outputs change together
 //! and `valid` is high for one cycle. `busy` is high while a computation runs or a request
 //! is pending. Starts at least L edges apart each get their own `valid`, exactly L edges
 //! after the start. `reset` (synchronous, active high) wins over `start`: outputs 0, `valid`
@@ -89,11 +89,13 @@ pub const fn speed_bits(counter_bits: u32, frac_bits: u32) -> u32 {
 }
 
 /// Clock edges from the edge that samples a `start` (block idle) to the edge after which
-/// `valid` is high: 2·(N + F + 1) + 3 (one edge takes the request and sets up the ET
+/// `valid` is high: 2·(N + F + 1) + 4 (one edge takes the request and sets up the ET
 /// division, S = N + F + 1 ET steps (the multiplier runs during the first N), one edge
-/// stages the ET result and sets up the M/T division, S M/T steps, one edge publishes).
+/// puts the ET quotient into the two-cycle round-and-sign adder and sets up the M/T
+/// division (the first M/T step stages the ET result), S M/T steps, one edge puts the
+/// M/T quotient into the adder, one edge publishes).
 pub const fn latency_cycles(counter_bits: u32, frac_bits: u32) -> u32 {
-    2 * speed_bits(counter_bits, frac_bits) + 3
+    2 * speed_bits(counter_bits, frac_bits) + 4
 }
 
 /// `mode_shift` as used: 0, 1, 2; 3 counts as 2.
@@ -497,8 +499,9 @@ mod tests {
     #[test]
     fn widths_and_latency() {
         assert_eq!(speed_bits(24, 16), 41);
-        assert_eq!(latency_cycles(24, 16), 85);
-        assert_eq!(latency_cycles(8, 2), 25);
+        // 1 + S + 1 + S + 1 + 1 edges: S = 41 and S = 11.
+        assert_eq!(latency_cycles(24, 16), 86);
+        assert_eq!(latency_cycles(8, 2), 26);
         assert_eq!(effective_shift(3), 2);
         assert_eq!(effective_dt(0), 1);
     }

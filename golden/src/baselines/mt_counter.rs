@@ -2,15 +2,15 @@
 //! Bit-true model of the M/T counter `hdl::MtCounter<N>` (Ohmae 1982), and the M/T error
 //! bound at a given speed.
 //!
-//! The counter measures, per window of the free-running time base of
-//! [`crate::baselines::pc_counter::time_base`] (cfg_dt cycles, the same tick as the PC counter), the
+//! The counter measures, per window of the free-running time base
+//! [`crate::baselines::window_timer::WindowTimer`] (cfg_dt cycles, the same tick as the PC counter), the
 //! integers m and T of [`crate::ideal::mt`]: m = steps since the step that closed the previous
 //! measurement (the *anchor*), T = clock cycles from the anchor to the last of those steps.
 //! The speed m·dt/T (units of ω_lim) is left to a divider downstream.
 //!
 //! # Semantics (per rising clock edge, N = `bits`, 2..=32; max = 2^N − 1; x⁺ = min(x + 1, max))
-//! Inputs sampled at the edge: `reset`, `step`, `forward`, `cfg_dt`. Registers: phase
-//! (time base), `anchored`, `have_dir`, `dir`, m (steps since the anchor), a (cycles since
+//! Inputs sampled at the edge: `reset`, `step`, `forward`, `cfg_dt`. Registers: the time base
+//! ([`WindowTimer`]), `anchored`, `have_dir`, `dir`, m (steps since the anchor), a (cycles since
 //! the anchor), span (a at the last step), l (cycles since the last step); all saturating.
 //!
 //! 1. rev = step ∧ have_dir ∧ (forward ≠ dir) (a reversal); cont = step ∧ ¬rev.
@@ -36,7 +36,8 @@
 //! window length, so it never saturates; T saturates at max when the anchor is older than
 //! max cycles (then T means "at least max"); `stalled` = (l = max).
 //!
-//! Reset (synchronous, active high, wins): every register 0.
+//! Reset (synchronous, active high, wins): every register 0 (the time base takes the reset
+//! edge's cfg_dt, [`WindowTimer`]). Power-up is the state after a reset with cfg_dt ≥ 2.
 //!
 //! # Latency
 //! The outputs are registers written by the window-end edge: a step sampled at edge j is
@@ -55,7 +56,8 @@
 //! so T̂ ≥ ⌊T_min⌋, hence the bound 1/⌊max(1, ⌊r⌋)·D/r⌋, about 1/D for r ≥ 1 and 1/⌊P⌋ (the
 //! ET bound) below. Windows with m = 0 are decay bounds, not estimates, and are excluded.
 
-use crate::baselines::pc_counter::{time_base, unsigned_max};
+use crate::baselines::pc_counter::unsigned_max;
+use crate::baselines::window_timer::WindowTimer;
 
 /// Inputs of an [`MtCounter`] during one clock cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -90,7 +92,7 @@ pub struct MtOutputs {
 #[derive(Clone, Debug)]
 pub struct MtCounter {
     bits: u32,
-    phase: u64,
+    timer: WindowTimer,
     anchored: bool,
     have_dir: bool,
     dir: bool,
@@ -102,12 +104,12 @@ pub struct MtCounter {
 }
 
 impl MtCounter {
-    /// A counter with N = `bits` (2..=32) wide counters and `cfg_dt`, after reset.
+    /// A counter with N = `bits` (2..=32) wide counters and `cfg_dt`, at power-up.
     pub fn new(bits: u32) -> MtCounter {
         unsigned_max(bits);
         MtCounter {
             bits,
-            phase: 0,
+            timer: WindowTimer::new(),
             anchored: false,
             have_dir: false,
             dir: false,
@@ -128,13 +130,15 @@ impl MtCounter {
     pub fn step(&mut self, inp: MtInputs) -> MtOutputs {
         let max = unsigned_max(self.bits);
         assert!(inp.cfg_dt <= max, "cfg_dt {} does not fit", inp.cfg_dt);
+        let tick = self.timer.step(inp.reset, inp.cfg_dt);
         if inp.reset {
-            *self = MtCounter::new(self.bits);
+            *self = MtCounter {
+                timer: self.timer,
+                ..MtCounter::new(self.bits)
+            };
             return self.out;
         }
         let inc = |x: u64| (x + 1).min(max);
-        let (tick, phase) = time_base(self.phase, inp.cfg_dt);
-        self.phase = phase;
         let rev = inp.step && self.have_dir && inp.forward != self.dir;
         let cont = inp.step && !rev;
         let m_now = if cont { inc(self.m) } else { self.m };

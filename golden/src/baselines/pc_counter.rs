@@ -6,11 +6,12 @@
 //! Inputs sampled at the edge: `reset`, `step`, `forward` (one-cycle pulses from the
 //! quadrature decoder) and `cfg_dt` (window length in clock cycles, N bits, unsigned).
 //!
-//! 1. Free-running time base: a phase counter p. The edge is a *window end* (tick) when
-//!    p ≥ max(cfg_dt, 1) − 1; then p ← 0, else p ← p + 1. Steps never restart it. After a
-//!    reset at edge 0 and with a constant cfg_dt = D ≥ 1, the ticks are the edges D, 2D, …
-//!    Lowering cfg_dt at run time ends the current window at once (the comparison is ≥);
-//!    cfg_dt = 0 counts as 1 (a window end on every edge).
+//! 1. Free-running time base, [`WindowTimer`]: the edge is a *window end* (tick) when its
+//!    phase p has reached max(cfg_dt, 1) − 1 for the cfg_dt of the edge before; then
+//!    p ← 0, else p ← p + 1. Steps never restart it. After a reset at edge 0 and with a
+//!    constant cfg_dt = D ≥ 1, the ticks are the edges D, 2D, … A change of cfg_dt acts
+//!    one edge later; lowering it ends the current window at the next edge (the comparison
+//!    is ≥); cfg_dt = 0 counts as 1 (a window end on every edge).
 //! 2. Two unsigned counters, f (forward steps) and b (backward steps), of the current window.
 //!    A window is half-open: it holds the steps sampled at the edges [tick, next tick), i.e.
 //!    a step sampled on a window-end edge belongs to the *next* window. This is
@@ -23,7 +24,9 @@
 //!    possible when cfg_dt > 2^(N−1) − 1), `saturated` = the clamp acted, `strobe` = 1.
 //!    Otherwise `strobe` = 0 and `count`, `saturated` hold.
 //!
-//! Reset (synchronous, active high, wins): p, f, b, count, saturated, strobe ← 0.
+//! Reset (synchronous, active high, wins): p, f, b, count, saturated, strobe ← 0 (and the
+//! time base takes the reset edge's cfg_dt, [`WindowTimer`]). Power-up is the state after
+//! a reset with cfg_dt ≥ 2.
 //!
 //! # Latency
 //! A step sampled at edge j, with the window [tick_w, tick_{w+1}) containing j, is in the
@@ -38,6 +41,8 @@
 //! |count − r| < 1 and the relative error is below 1/r (100 % and more at r < 1, where a
 //! window often holds no pulse). The clock adds nothing to the count error; it only
 //! shifts the windows by under one cycle.
+
+use crate::baselines::window_timer::WindowTimer;
 
 /// Inputs of a [`PcCounter`] during one clock cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -68,7 +73,7 @@ pub struct PcOutputs {
 #[derive(Clone, Debug)]
 pub struct PcCounter {
     bits: u32,
-    phase: u64,
+    timer: WindowTimer,
     fwd: u64,
     bwd: u64,
     out: PcOutputs,
@@ -80,25 +85,13 @@ pub(crate) fn unsigned_max(bits: u32) -> u64 {
     (1u64 << bits) - 1
 }
 
-/// Window end of the free-running time base shared by [`PcCounter`] and
-/// [`crate::baselines::mt_counter::MtCounter`]: `phase` is the register before the edge; returns
-/// (tick, phase after the edge).
-pub fn time_base(phase: u64, cfg_dt: u64) -> (bool, u64) {
-    let limit = cfg_dt.max(1) - 1;
-    if phase >= limit {
-        (true, 0)
-    } else {
-        (false, phase + 1)
-    }
-}
-
 impl PcCounter {
-    /// A counter with N = `bits` (2..=32) wide `cfg_dt` and `count`, after reset.
+    /// A counter with N = `bits` (2..=32) wide `cfg_dt` and `count`, at power-up.
     pub fn new(bits: u32) -> PcCounter {
         unsigned_max(bits);
         PcCounter {
             bits,
-            phase: 0,
+            timer: WindowTimer::new(),
             fwd: 0,
             bwd: 0,
             out: PcOutputs::default(),
@@ -119,12 +112,14 @@ impl PcCounter {
     pub fn step(&mut self, inp: PcInputs) -> PcOutputs {
         let max = unsigned_max(self.bits);
         assert!(inp.cfg_dt <= max, "cfg_dt {} does not fit", inp.cfg_dt);
+        let tick = self.timer.step(inp.reset, inp.cfg_dt);
         if inp.reset {
-            *self = PcCounter::new(self.bits);
+            *self = PcCounter {
+                timer: self.timer,
+                ..PcCounter::new(self.bits)
+            };
             return self.out;
         }
-        let (tick, phase) = time_base(self.phase, inp.cfg_dt);
-        self.phase = phase;
         let f_in = u64::from(inp.step && inp.forward);
         let b_in = u64::from(inp.step && !inp.forward);
         self.out.strobe = tick;

@@ -218,7 +218,7 @@ pub(crate) fn paper_model(estimator: Estimator, op: &OperatingPoint) -> FreqMode
 }
 
 /// Clock edges from a `start` of the baseline speeds block to its `baseline_strobe`:
-/// 2·(N + F + 1) + 3 ([`crate::baselines::baseline_speeds::latency_cycles`]).
+/// 2·(N + F + 1) + 4 ([`crate::baselines::baseline_speeds::latency_cycles`]).
 pub fn baseline_latency_cycles(p: &Params) -> u64 {
     u64::from(crate::baselines::baseline_speeds::latency_cycles(
         p.counter_bits(),
@@ -237,8 +237,8 @@ pub fn baseline_latency_cycles(p: &Params) -> u64 {
 /// ET's last period and M/T's measurement include the step at edge T: they end at
 /// T − E. The block takes the `start` of the tick one edge later, T + 1, and publishes
 /// [`baseline_latency_cycles`] L after that. So D = L + 1 + E + 1 for PC, L + 1 + E for
-/// ET and M/T: with N = 13, F = 16 (dt = 1000 cycles at 3600 r/min), L = 63 and D = 69
-/// and 68 cycles.
+/// ET and M/T: with N = 13, F = 16 (dt = 1000 cycles at 3600 r/min), L = 64 and D = 70
+/// and 69 cycles.
 pub fn window_to_strobe_cycles(estimator: Estimator, p: &Params) -> u64 {
     let e = u64::from(crate::top::ports::Latency::new(p, 0).edge_to_position);
     let pc_extra = u64::from(estimator == Estimator::Pc);

@@ -444,11 +444,14 @@ impl CoreModel {
             }
         }
         let (r, st, fw) = (rst, dec.step, dec.forward);
+        // The window timers take the dt that dt_reg takes at this edge: they compare a
+        // cycle ahead, so their windows are those of dt_reg.
+        let dt_next = self.dt_eff(inp.cfg_dt);
         self.pc.step(PcInputs {
             reset: r,
             step: st,
             forward: fw,
-            cfg_dt: self.dt_reg,
+            cfg_dt: dt_next,
         });
         self.et.step(EtInputs {
             reset: r,
@@ -459,7 +462,7 @@ impl CoreModel {
             reset: r,
             step: st,
             forward: fw,
-            cfg_dt: self.dt_reg,
+            cfg_dt: dt_next,
         });
         self.baseline.step(BaselineSpeedsInputs {
             reset: rst,

@@ -5,6 +5,7 @@
 //! are generated from them, and the Rust structs of one cycle's values map onto them
 //! ([`crate::top::port_fields`]). The latencies are [`Latency`].
 
+use crate::baselines::baseline_speeds;
 use crate::estimator::speed_calc;
 use crate::params::{speed_bits_for, Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
 use serde::Serialize;
@@ -182,12 +183,16 @@ pub struct Latency {
     /// From the edge that first samples a new level of A or B to the edge after which
     /// `position` and (for a restart) `nep`/`ndt`/`update` show it: 3 + max(L, 1).
     pub edge_to_position: u32,
-    /// Speed calculator: a start to its result, 3·(N + F + 1) + 5.
+    /// Speed calculator: a start to its result, 6·(N + F + 1) + 9.
     pub speed_calc: u32,
     /// From the edge that first samples an A or B edge whose step restarts Table 1 (writes
     /// Ndt1) to the edge after which `speed_strobe` shows the speeds computed from it:
     /// edge_to_position + 1 + speed_calc + 1.
     pub edge_to_speed_strobe: u32,
+    /// From the edge that raised `mt_strobe` (a window end of the PC and M/T counters) to
+    /// the edge after which `baseline_strobe` shows the window's speeds: the baseline
+    /// block samples the start one edge later and takes 2·(N + F + 1) + 4 edges.
+    pub window_to_baseline_strobe: u32,
 }
 
 impl Latency {
@@ -195,10 +200,12 @@ impl Latency {
     pub fn new(p: &Params, cfg_filter: u64) -> Latency {
         let edge_to_position = 3 + cfg_filter.max(1) as u32;
         let speed_calc = speed_calc::latency_cycles(p.counter_bits(), p.speed_frac_bits());
+        let baseline = baseline_speeds::latency_cycles(p.counter_bits(), p.speed_frac_bits());
         Latency {
             edge_to_position,
             speed_calc,
             edge_to_speed_strobe: edge_to_position + 1 + speed_calc + 1,
+            window_to_baseline_strobe: 1 + baseline,
         }
     }
 }

@@ -19,8 +19,13 @@
 //! | `carry_in` | in | 1 | added at bit 0 (with `b` inverted, a − b) |
 //! | `sum` | out | W | a + b + carry_in mod 2^W of the inputs at the last edge |
 //!
-//! Both halves use a spare bottom bit for the carry in: ({x, c} + {y, c}) >> 1 = x + y + c,
-//! one adder with no carry-in port (a three-operand sum would be two chains in series).
+//! Both halves use a spare bottom bit for the carry in: ({x, c} + {y, 1}) >> 1 = x + y + c
+//! (bit 0 is c + 1, whose carry is c), one adder with no carry-in port (a three-operand sum
+//! would be two chains in series). The spare bit of the second operand is the constant 1,
+//! not c again: with the same net on both operands the bottom carry cell's LUT had it on
+//! two of its inputs, and nextpnr-ice40 0.4's router then looped forever on most
+//! placements, alternating the net between the LUT's two input pins (router1, and router2
+//! left the wires overused).
 //! W: 4..=127.
 
 use rust_hdl::prelude::*;
@@ -41,7 +46,7 @@ pub struct TwoCycleAdder<const W: usize> {
     pub carry_in: Signal<In, Bit>,
     /// a + b + carry_in mod 2^W of the inputs at the last edge.
     pub sum: Signal<Out, Bits<W>>,
-    /// {a_low, c} + {b_low, c} of the last edge: the low sum at bits 1..=L, its carry at
+    /// {a_low, c} + {b_low, 1} of the last edge: the low sum at bits 1..=L, its carry at
     /// bit L + 1.
     low: DFF<Bits<W>>,
     /// The high W − L bits of a and b at the last edge, shifted down.
@@ -53,7 +58,7 @@ pub struct TwoCycleAdder<const W: usize> {
     mid_carry: Signal<Local, Bit>,
     high_a: Signal<Local, Bits<W>>,
     high_b: Signal<Local, Bits<W>>,
-    /// {a_high, c} + {b_high, c}: the high sum at bits 1..=W − L.
+    /// {a_high, c} + {b_high, 1}: the high sum at bits 1..=W − L.
     high_sum: Signal<Local, Bits<W>>,
     zero: Constant<Bits<W>>,
     one: Constant<Bits<W>>,
@@ -108,23 +113,21 @@ impl<const W: usize> Logic for TwoCycleAdder<W> {
     fn update(&mut self) {
         dff_setup!(self, clock, low, high_a_reg, high_b_reg);
         self.low_a.next = (self.a.val() & self.low_mask.val()) << self.sh_one.val();
-        self.low_b.next = (self.b.val() & self.low_mask.val()) << self.sh_one.val();
         if self.carry_in.val() {
             self.low_a.next =
                 ((self.a.val() & self.low_mask.val()) << self.sh_one.val()) | self.one.val();
-            self.low_b.next =
-                ((self.b.val() & self.low_mask.val()) << self.sh_one.val()) | self.one.val();
         }
+        self.low_b.next =
+            ((self.b.val() & self.low_mask.val()) << self.sh_one.val()) | self.one.val();
         self.low.d.next = self.low_a.val() + self.low_b.val();
         self.mid_carry.next = (self.low.q.val() & self.low_carry.val()) != self.zero.val();
         self.high_a_reg.d.next = self.a.val() >> self.sh_low.val();
         self.high_b_reg.d.next = self.b.val() >> self.sh_low.val();
         self.high_a.next = self.high_a_reg.q.val() << self.sh_one.val();
-        self.high_b.next = self.high_b_reg.q.val() << self.sh_one.val();
         if self.mid_carry.val() {
             self.high_a.next = (self.high_a_reg.q.val() << self.sh_one.val()) | self.one.val();
-            self.high_b.next = (self.high_b_reg.q.val() << self.sh_one.val()) | self.one.val();
         }
+        self.high_b.next = (self.high_b_reg.q.val() << self.sh_one.val()) | self.one.val();
         self.high_sum.next = self.high_a.val() + self.high_b.val();
         self.sum.next = ((self.high_sum.val() >> self.sh_one.val()) << self.sh_low.val())
             | ((self.low.q.val() >> self.sh_one.val()) & self.low_mask.val());

@@ -53,7 +53,7 @@
 //! # Timing
 //!
 //! A `start` sampled at edge k while idle gives `valid` after edge k + L, with
-//! L = 2·(N + F + 1) + 3 ([`golden::baselines::baseline_speeds::latency_cycles`]; 85 for N = 24,
+//! L = 2·(N + F + 1) + 4 ([`golden::baselines::baseline_speeds::latency_cycles`]; 86 for N = 24,
 //! F = 16), whatever the operands. `busy` is high after edges k … k + L − 1. A `start`
 //! while busy latches its inputs into the one-deep request register (replacing a request
 //! that has not begun) and is served at the edge after the current `valid`, so the values of
@@ -62,7 +62,7 @@
 //!
 //! # Datapath
 //!
-//! Schedule, state register IDLE → STEP ×S → SETUP → STEP ×S → FINISH → IDLE:
+//! Schedule, state register IDLE → STEP ×S → SETUP → STEP ×S → FINISH → OUTPUT → IDLE:
 //!
 //! * **Take** (IDLE with a request pending): the request is copied into the working
 //!   registers and the divider is set up for ET at once: X = dt (A = 0, Q = dt), den =
@@ -71,10 +71,12 @@
 //!   forms m·dt least significant bit first: if bit 0 of Q is set, A + dt (N bits plus the
 //!   carry read off the operands' and the sum's top bits), then {carry, A, Q} shifts right
 //!   by one; after N steps {A, Q} = m·dt. No N×N multiplier (iCE40 has no DSP).
-//! * **SETUP**: the ET result is rounded and signed into a staging register; the divider is
-//!   set up for M/T: X = {A, Q}, den = t, and the saturation flag is A >> s ≥ t.
-//! * **STEP ×S, M/T**, then **FINISH** writes `speed_pc` (the working copy of `pc_count`
-//!   shifted), `speed_et` (staged) and `speed_mt` (rounded now) together with `valid`.
+//! * **SETUP**: the ET quotient goes into the round-and-sign adder, whose sum the first M/T
+//!   step writes into a staging register; the divider is set up for M/T: X = {A, Q},
+//!   den = t, and the saturation flag is A >> s ≥ t.
+//! * **STEP ×S, M/T**, then **FINISH** puts the M/T quotient into the round-and-sign adder,
+//!   and **OUTPUT** writes `speed_pc` (the working copy of `pc_count` shifted), `speed_et`
+//!   (staged) and `speed_mt` (the adder's sum) together with `valid`.
 //!
 //! **Divider** (restoring, radix 2, [`golden::baselines::baseline_speeds::hardware_magnitude`]): for
 //! num' = X·2^(2−s) (2N + 2 bits, never formed) the partial remainder R (N bits) is preloaded
@@ -111,7 +113,7 @@ use rust_hdl::prelude::*;
 /// Width of the step counter: it holds S − 1 ≤ 56.
 const COUNT_BITS: usize = 6;
 /// Width of the state register.
-const STATE_BITS: usize = 2;
+const STATE_BITS: usize = 3;
 /// Width of the shift-amount constants.
 const SHIFT_BITS: usize = 8;
 
@@ -204,6 +206,8 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     dq: DFF<Bits<S>>,
     // Results.
     stage_et: DFF<Bits<S>>,
+    /// The round adder's sum is the ET result (the cycle after SETUP).
+    et_rounding: DFF<Bit>,
     out_pc: DFF<Bits<S>>,
     out_et: DFF<Bits<S>>,
     out_mt: DFF<Bits<S>>,
@@ -242,7 +246,10 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     /// Quotient bit 0: the rounding increment.
     round_bit: Signal<Local, Bit>,
     addend: Signal<Local, Bits<S>>,
-    rounded: Signal<Local, Bits<S>>,
+    /// addend + (round_bit xor negative), ready the cycle after its operands: the carry
+    /// chain is cut in two by a register (S = 41 bits for N = 24 was the block's slowest
+    /// path in one cycle).
+    round_add: crate::arith::two_cycle_adder::TwoCycleAdder<S>,
     // PC.
     pc_sign: Signal<Local, Bit>,
     pc_speed: Signal<Local, Bits<S>>,
@@ -272,6 +279,7 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     st_step: Constant<Bits<STATE_BITS>>,
     st_setup: Constant<Bits<STATE_BITS>>,
     st_finish: Constant<Bits<STATE_BITS>>,
+    st_output: Constant<Bits<STATE_BITS>>,
 }
 
 impl<const N: usize, const F: usize, const S: usize> BaselineSpeeds<N, F, S> {
@@ -333,6 +341,7 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             den: Default::default(),
             dq: Default::default(),
             stage_et: Default::default(),
+            et_rounding: Default::default(),
             out_pc: Default::default(),
             out_et: Default::default(),
             out_mt: Default::default(),
@@ -360,7 +369,7 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             half: Default::default(),
             round_bit: Default::default(),
             addend: Default::default(),
-            rounded: Default::default(),
+            round_add: Default::default(),
             pc_sign: Default::default(),
             pc_speed: Default::default(),
             n_zero: Constant::new(0.into()),
@@ -382,6 +391,7 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             st_step: Constant::new(1.into()),
             st_setup: Constant::new(2.into()),
             st_finish: Constant::new(3.into()),
+            st_output: Constant::new(4.into()),
         }
     }
 }
@@ -421,6 +431,7 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             den,
             dq,
             stage_et,
+            et_rounding,
             out_pc,
             out_et,
             out_mt,
@@ -521,10 +532,12 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
         if self.sel_neg.val() {
             self.addend.next = !self.half.val();
         }
-        self.rounded.next = self.addend.val();
-        if self.round_bit.val() ^ self.sel_neg.val() {
-            self.rounded.next = self.addend.val() + self.s_one.val();
-        }
+        // The sum is ready in the cycle after the operands (TwoCycleAdder): the ET result
+        // of SETUP in the first M/T step (`et_rounding`), the M/T result of FINISH in OUTPUT.
+        self.round_add.clock.next = self.clock.val();
+        self.round_add.a.next = self.addend.val();
+        self.round_add.b.next = self.s_zero.val();
+        self.round_add.carry_in.next = self.round_bit.val() ^ self.sel_neg.val();
 
         // PC: pc_count at the top of S bits is pc·2^(F+1); 1 + s arithmetic right shifts.
         self.pc_sign.next = (self.w_pc.q.val() & self.n_msb.val()) != self.n_zero.val();
@@ -558,6 +571,10 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
 
         // Sequencer.
         self.valid_reg.d.next = false;
+        self.et_rounding.d.next = self.state.q.val() == self.st_setup.val();
+        if self.et_rounding.q.val() {
+            self.stage_et.d.next = self.round_add.sum.val();
+        }
         if self.take.val() | (self.state.q.val() == self.st_setup.val()) {
             self.part_rem.d.next = self.load_rem.val();
             self.dq.d.next = self.load_dq.val();
@@ -584,7 +601,6 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
         }
         if self.state.q.val() == self.st_setup.val() {
             self.den.d.next = self.w_t.q.val();
-            self.stage_et.d.next = self.rounded.val();
             self.w_mt_sat.d.next = self.load_rem.val() >= self.w_t.q.val();
             self.phase.d.next = true;
         }
@@ -615,9 +631,12 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             }
         }
         if self.state.q.val() == self.st_finish.val() {
+            self.state.d.next = self.st_output.val();
+        }
+        if self.state.q.val() == self.st_output.val() {
             self.out_pc.d.next = self.pc_speed.val();
             self.out_et.d.next = self.stage_et.q.val();
-            self.out_mt.d.next = self.rounded.val();
+            self.out_mt.d.next = self.round_add.sum.val();
             self.valid_reg.d.next = true;
             self.state.d.next = self.st_idle.val();
         }
@@ -637,6 +656,7 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             self.pending.d.next = false;
             self.state.d.next = self.st_idle.val();
             self.valid_reg.d.next = false;
+            self.et_rounding.d.next = false;
             self.out_pc.d.next = self.s_zero.val();
             self.out_et.d.next = self.s_zero.val();
             self.out_mt.d.next = self.s_zero.val();
@@ -696,7 +716,7 @@ mod tests {
     }
 
     #[test]
-    fn known_answers_by_hand_in_85_cycles() {
+    fn known_answers_by_hand_in_86_cycles() {
         let mut uut = Uut::default();
         uut.connect_all();
         // x2, dt = 10: PC −5 → −5·2^15 = −163840; ET period 3 → 10·32768/3 = 109226.67 →
@@ -711,8 +731,8 @@ mod tests {
             negative: true,
         };
         step(&mut uut, true, &r);
-        // Busy after edges 0 (the start) to 84, valid after edge 85.
-        for k in 1..=85 {
+        // Busy after edges 0 (the start) to 85, valid after edge 86.
+        for k in 1..=86 {
             assert!(uut.busy.val() && !uut.valid.val(), "after edge {}", k - 1);
             step(&mut uut, false, &r);
         }

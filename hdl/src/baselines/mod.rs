@@ -5,3 +5,4 @@ pub mod baseline_speeds;
 pub mod et_timer;
 pub mod mt_counter;
 pub mod pc_counter;
+pub mod window_timer;

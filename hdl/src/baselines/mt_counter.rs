@@ -6,7 +6,8 @@
 //! semantics, latency and error bound in full.
 //!
 //! Per clock edge (N = counter width, 2..=32, max = 2^N − 1, x⁺ = min(x + 1, max)):
-//! - time base as in [`crate::PcCounter`]: `tick` = phase ≥ max(`cfg_dt`, 1) − 1;
+//! - time base: [`WindowTimer`](crate::baselines::window_timer::WindowTimer), as in
+//!   [`crate::PcCounter`] (registered `tick`; a change of `cfg_dt` acts one edge later);
 //! - rev = step of the other direction than the last step (a reversal); cont = step ∧ ¬rev;
 //! - the measurement including this edge: m' = cont ? m⁺ : m, span' = cont ? a⁺ : span,
 //!   l' = cont ? 0 : l⁺ (a = cycles since the anchor, l = cycles since the last step);
@@ -35,7 +36,7 @@ pub struct MtCounter<const N: usize> {
     pub step: Signal<In, Bit>,
     /// The step is forward.
     pub forward: Signal<In, Bit>,
-    /// Window length, clock cycles (0 counts as 1).
+    /// Window length, clock cycles (0 counts as 1), used from the next cycle on.
     pub cfg_dt: Signal<In, Bits<N>>,
     /// Steps in the measurement (0: none since the anchor).
     pub m: Signal<Out, Bits<N>>,
@@ -47,11 +48,8 @@ pub struct MtCounter<const N: usize> {
     pub strobe: Signal<Out, Bit>,
     /// No step for 2^N − 1 cycles or more.
     pub stalled: Signal<Out, Bit>,
-    /// The time base's phase + 1 (at most 2^N − 1: the phase never exceeds dt − 1) with
-    /// bit 0 inverted, so that the register's power-up and reset value 0 is phase 0.
-    phase_reg: DFF<Bits<N>>,
-    /// phase + 1.
-    phase_plus_one: Signal<Local, Bits<N>>,
+    /// The window time base.
+    timer: crate::baselines::window_timer::WindowTimer<N>,
     anchored: DFF<Bit>,
     have_dir: DFF<Bit>,
     dir: DFF<Bit>,
@@ -94,8 +92,7 @@ impl<const N: usize> Default for MtCounter<N> {
             negative: Default::default(),
             strobe: Default::default(),
             stalled: Default::default(),
-            phase_reg: Default::default(),
-            phase_plus_one: Default::default(),
+            timer: Default::default(),
             anchored: Default::default(),
             have_dir: Default::default(),
             dir: Default::default(),
@@ -128,18 +125,13 @@ impl<const N: usize> Logic for MtCounter<N> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, phase_reg, anchored, have_dir, dir, m_count, age, span, last, m_reg,
-            t_reg, neg_reg, strobe_reg
+            self, clock, anchored, have_dir, dir, m_count, age, span, last, m_reg, t_reg, neg_reg,
+            strobe_reg
         );
-        // Time base.
-        // phase ≥ max(dt, 1) − 1 is phase + 1 ≥ dt (dt = 0 included): one carry chain from
-        // registers, no subtraction in front of it.
-        self.phase_plus_one.next = self.phase_reg.q.val() ^ self.one.val();
-        self.tick.next = self.phase_plus_one.val() >= self.cfg_dt.val();
-        self.phase_reg.d.next = (self.phase_plus_one.val() + self.one.val()) ^ self.one.val();
-        if self.tick.val() {
-            self.phase_reg.d.next = self.zero.val();
-        }
+        self.timer.clock.next = self.clock.val();
+        self.timer.reset.next = self.reset.val();
+        self.timer.cfg_dt.next = self.cfg_dt.val();
+        self.tick.next = self.timer.tick.val();
         // Saturating increments.
         self.m_inc.next = self.m_count.q.val() + self.one.val();
         if self.m_count.q.val() == self.max.val() {
@@ -201,7 +193,6 @@ impl<const N: usize> Logic for MtCounter<N> {
             self.dir.d.next = self.forward.val();
         }
         if self.reset.val() {
-            self.phase_reg.d.next = self.zero.val();
             self.anchored.d.next = false;
             self.have_dir.d.next = false;
             self.dir.d.next = false;

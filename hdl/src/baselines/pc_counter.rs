@@ -4,10 +4,10 @@
 //! docs give the semantics, latency and error bound in full.
 //!
 //! Per clock edge (N = counter width, 2..=32):
-//! - time base: `tick` = phase ≥ max(`cfg_dt`, 1) − 1; phase ← 0 on a tick, else + 1. Steps
-//!   never restart it (with a constant dt D the ticks are edges D, 2D, … after reset). The
-//!   register holds phase + 1 with bit 0 inverted (0 is phase 0 at power-up and reset) and
-//!   the test is phase + 1 ≥ `cfg_dt`: one carry chain;
+//! - time base: [`WindowTimer`](crate::baselines::window_timer::WindowTimer), whose
+//!   registered `tick` ends a window every max(`cfg_dt`, 1) edges; a change of `cfg_dt` acts
+//!   one edge later. Steps never restart it (with a constant dt D the ticks are edges D,
+//!   2D, … after reset);
 //! - the net steps f − b of the window [tick, next tick) (forward minus backward): the step
 //!   of a tick edge starts the next window (`golden::ideal::fixed_time`'s convention). A
 //!   window is at most 2^N − 1 edges, so f − b fits N + 1 bits of two's complement: one
@@ -20,7 +20,8 @@
 //!   range check and a negation were chained in the tick cycle).
 //!
 //! Ports: `clock`, `reset` (synchronous, active high), `step`, `forward` (from the
-//! quadrature decoder), `cfg_dt[N-1:0]` (cycles; read combinationally every cycle).
+//! quadrature decoder), `cfg_dt[N-1:0]` (cycles; sampled at every edge, used from the next
+//! cycle on).
 //! Registered outputs: `count[N-1:0]` (two's complement), `saturated`, `strobe`.
 //! Latency: the count of a window is published by the window's closing tick edge (no
 //! further stage). Reset clears every register.
@@ -38,7 +39,7 @@ pub struct PcCounter<const N: usize> {
     pub step: Signal<In, Bit>,
     /// The step is forward.
     pub forward: Signal<In, Bit>,
-    /// Window length, clock cycles (0 counts as 1).
+    /// Window length, clock cycles (0 counts as 1), used from the next cycle on.
     pub cfg_dt: Signal<In, Bits<N>>,
     /// Net steps of the last window, N-bit two's complement, saturating.
     pub count: Signal<Out, Bits<N>>,
@@ -46,11 +47,8 @@ pub struct PcCounter<const N: usize> {
     pub saturated: Signal<Out, Bit>,
     /// One cycle per window end (count written).
     pub strobe: Signal<Out, Bit>,
-    /// The time base's phase + 1 (at most 2^N − 1: the phase never exceeds dt − 1) with
-    /// bit 0 inverted, so that the register's power-up and reset value 0 is phase 0.
-    phase_reg: DFF<Bits<N>>,
-    /// phase + 1.
-    phase_plus_one: Signal<Local, Bits<N>>,
+    /// The window time base.
+    timer: crate::baselines::window_timer::WindowTimer<N>,
     /// f − b, low N bits.
     net_lo: DFF<Bits<N>>,
     /// f − b, bit N (the sign of the N + 1-bit value).
@@ -85,8 +83,7 @@ impl<const N: usize> Default for PcCounter<N> {
             count: Default::default(),
             saturated: Default::default(),
             strobe: Default::default(),
-            phase_reg: Default::default(),
-            phase_plus_one: Default::default(),
+            timer: Default::default(),
             net_lo: Default::default(),
             net_hi: Default::default(),
             count_reg: Default::default(),
@@ -109,12 +106,11 @@ impl<const N: usize> Default for PcCounter<N> {
 impl<const N: usize> Logic for PcCounter<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, phase_reg, net_lo, net_hi, count_reg, sat_reg, strobe_reg);
-        // phase ≥ max(dt, 1) − 1 is phase + 1 ≥ dt (dt = 0 included): one carry chain from
-        // registers, no subtraction in front of it.
-        self.phase_plus_one.next = self.phase_reg.q.val() ^ self.one.val();
-        self.tick.next = self.phase_plus_one.val() >= self.cfg_dt.val();
-        self.phase_reg.d.next = (self.phase_plus_one.val() + self.one.val()) ^ self.one.val();
+        dff_setup!(self, clock, net_lo, net_hi, count_reg, sat_reg, strobe_reg);
+        self.timer.clock.next = self.clock.val();
+        self.timer.reset.next = self.reset.val();
+        self.timer.cfg_dt.next = self.cfg_dt.val();
+        self.tick.next = self.timer.tick.val();
         self.up.next = self.step.val() & self.forward.val();
         self.down.next = self.step.val() & !self.forward.val();
         self.delta.next = self.one.val();
@@ -126,7 +122,6 @@ impl<const N: usize> Logic for PcCounter<N> {
         self.strobe_reg.d.next = self.tick.val();
         if self.tick.val() {
             // Publish the window that ends now; the step of this edge starts the next one.
-            self.phase_reg.d.next = self.zero.val();
             self.count_reg.d.next = self.net_lo.q.val();
             self.sat_reg.d.next = !self.fits.val();
             if !self.fits.val() {
@@ -154,7 +149,6 @@ impl<const N: usize> Logic for PcCounter<N> {
             }
         }
         if self.reset.val() {
-            self.phase_reg.d.next = self.zero.val();
             self.net_lo.d.next = self.zero.val();
             self.net_hi.d.next = false;
             self.count_reg.d.next = self.zero.val();

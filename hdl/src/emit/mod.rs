@@ -70,8 +70,8 @@ fn header(module: &str, p: &Params, function: &str, extra: &[String], ports: &[P
         p.speed_frac_bits()
     ));
     line(format!(
-        "Latency (cfg_filter = 0): A/B edge to position {} cycles; speed calculator {}; A/B edge that restarts Table 1 to speed_strobe {}.",
-        latency.edge_to_position, latency.speed_calc, latency.edge_to_speed_strobe
+        "Latency (cfg_filter = 0): A/B edge to position {} cycles; speed calculator {}; A/B edge that restarts Table 1 to speed_strobe {}; mt_strobe (window end) to baseline_strobe {}.",
+        latency.edge_to_position, latency.speed_calc, latency.edge_to_speed_strobe, latency.window_to_baseline_strobe
     ));
     for t in extra {
         line(t.clone());
@@ -176,6 +176,12 @@ pub fn ports_markdown(p: &Params) -> String {
             l.edge_to_position, l.speed_calc, l.edge_to_speed_strobe
         ));
     }
+    md.push_str(&format!(
+        "\n`baseline_strobe` rises {} edges after the edge that raised `mt_strobe`: the \
+         window end of the PC and M/T counters (the baseline block samples it one edge later \
+         and takes 2(N + F + 1) + 4 edges), whatever `cfg_filter`.\n",
+        Latency::new(p, 0).window_to_baseline_strobe
+    ));
     md.push_str(&format!(
         "\n## `encspeed_ecc`: the core with the eccentricity-corrected speeds\n\n\
          `generated/encspeed_ecc.v` has every port above, unchanged, and these \

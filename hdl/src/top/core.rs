@@ -491,8 +491,10 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.pc.forward.next = self.decoder.forward.val();
         self.et.forward.next = self.decoder.forward.val();
         self.mt.forward.next = self.decoder.forward.val();
-        self.pc.cfg_dt.next = self.dt_reg.q.val();
-        self.mt.cfg_dt.next = self.dt_reg.q.val();
+        // The window timers compare a cycle ahead: they take the dt that dt_reg takes at
+        // this edge, so their windows are those of dt_reg.
+        self.pc.cfg_dt.next = self.dt_eff.val();
+        self.mt.cfg_dt.next = self.dt_eff.val();
         self.et_have.d.next =
             !self.engine_reset.val() & (self.et_have.q.val() | self.et.strobe.val());
         self.baseline.reset.next = self.rst.val();
