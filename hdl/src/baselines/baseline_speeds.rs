@@ -100,13 +100,14 @@
 //! # Resources
 //!
 //! Registers: the request (5N + 6), working copies and flags (2N + 7), the multiplier (3N),
-//! the divider (2N + S), staging and outputs (4S + 1), a 6-bit step counter and 3 control
-//! bits: 516 for N = 24, F = 16 (S = 41). Adders: the divider's N-bit trial subtraction,
-//! the multiplier's N-bit add, the S-bit round-and-sign adder, the N-bit saturation
-//! comparison. yosys 0.23 `synth_ice40 -top baseline_speeds; stat` on
-//! `baseline_speeds_verilog::<24, 16, 41>` maps the block to 501 flip-flops (constant bits
-//! removed), 642 LUT4 and 118 carry cells (SpeedCalc, three divisions of 2N + 1 bits: 604,
-//! 792 and 277).
+//! the divider (2N + S), staging and outputs (4S + 1), the round adder's low sum and high
+//! operand (about S + 3), a 6-bit step counter and 4 control bits. Adders: the divider's
+//! N-bit trial subtraction, the multiplier's N-bit add, the S-bit round-and-sign adder in
+//! two halves, the N-bit saturation comparison. yosys 0.23 `synth_ice40 -top
+//! 'encspeed_core$baseline'; stat` on generated/encspeed_core.v (the block at N = 24,
+//! F = 16, S = 41) maps it to 545 flip-flops (constant bits removed), 633 LUT4 and 119
+//! carry cells; 501, 677 and 118 with the round-and-sign adder in one cycle. (SpeedCalc,
+//! three divisions of 2N + 1 bits: 604, 792 and 277.)
 
 use rust_hdl::prelude::*;
 
