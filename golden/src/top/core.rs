@@ -502,7 +502,7 @@ impl CoreModel {
             self.last_dir = dec.forward;
         }
         self.cfg_error = inp.cfg_dt == 1 || inp.cfg_mode == MODE_INVALID;
-        self.dt_reg = self.dt_eff(inp.cfg_dt);
+        self.dt_reg = dt_next;
         self.timeout_reg = if inp.cfg_timeout == 0 {
             self.default_timeout
         } else {
