@@ -5,18 +5,18 @@
 // Derived: omega_lim = 0.9765625 rev/s at dt_cycles, timeout_dt = 1000 dt intervals, counters saturate at 16777215
 // Function: quadrature encoder interface: filtered x1/x2/x4 decoding, position, Rairan (2013) synchronised speed n1/n2/n3 and the PC, ET and M/T baselines in hardware, faults.
 // Speeds: two's complement, 41 bits, speed_frac_bits = 16: value = raw * 2^-16 omega_lim (one line per dt).
-// Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 255; A/B edge that restarts Table 1 to speed_strobe 261; mt_strobe (window end) to baseline_strobe 87.
+// Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 255; A/B edge that restarts Table 1 to speed_strobe 261; mt_strobe (window end) to baseline_strobe 87; a configuration input acts 1 edge(s) after the edge that samples it (cfg_mode: the core's reset), cfg_dt moves the dt windows 2 edges after.
 // Ports:
 //   input  clock: core clock; everything happens at its rising edge
 //   input  reset: synchronous, active high; hold it for at least one edge
 //   input  enc_a: encoder channel A, asynchronous (two-flop synchronised inside)
 //   input  enc_b: encoder channel B, asynchronous; forward = A leads B by 90 degrees
 //   input  enc_z: encoder index Z, asynchronous
-//   input  cfg_dt[23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)
-//   input  cfg_timeout[23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered
-//   input  cfg_filter[15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off
-//   input  cfg_mode[1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. A change resets the whole core (as reset)
-//   input  cfg_z_mode[1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset
+//   input  cfg_dt[23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered: dt_active shows a change one edge later, the dt windows use it from the edge after that
+//   input  cfg_timeout[23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid compare with it from the edge that samples it
+//   input  cfg_filter[15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off; registered (acts one edge later)
+//   input  cfg_mode[1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Registered: a change resets the whole core (as reset) at the edge after the one that samples it, with the new mode in place
+//   input  cfg_z_mode[1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset; registered (acts one edge later)
 //   input  clear_faults: clears fault_illegal, fault_overspeed, fault_revolution (an event in the same cycle wins)
 //   output position[31:0]: position in decoder steps, 0 .. lines*2^s - 1 (s = 0, 1, 2 in x1, x2, x4); wraps at a revolution, which is its definition
 //   output z_latch[31:0]: position latched at the last index edge (cfg_z_mode 2, 3)
@@ -326,12 +326,20 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     reg  [23:0] timeout_reg$d;
     wire  [23:0] timeout_reg$q;
     reg  timeout_reg$clock;
+    reg  [15:0] filter_reg$d;
+    wire  [15:0] filter_reg$q;
+    reg  filter_reg$clock;
+    reg  [1:0] z_mode_reg$d;
+    wire  [1:0] z_mode_reg$q;
+    reg  z_mode_reg$clock;
     reg  cfg_error_reg$d;
     wire  cfg_error_reg$q;
     reg  cfg_error_reg$clock;
-    reg  [1:0] mode_reg$d;
-    wire  [1:0] mode_reg$q;
-    reg  mode_reg$clock;
+    reg  mode_reset$clock;
+    reg  mode_reset$reset;
+    reg  [1:0] mode_reset$cfg_mode;
+    wire  mode_reset$rst;
+    wire  [1:0] mode_reset$mode;
     
     // Local signals
     reg  [31:0] restart_now;
@@ -612,15 +620,27 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         .q(timeout_reg$q),
         .clock(timeout_reg$clock)
     );
+    encspeed_core$filter_reg filter_reg(
+        .d(filter_reg$d),
+        .q(filter_reg$q),
+        .clock(filter_reg$clock)
+    );
+    encspeed_core$z_mode_reg z_mode_reg(
+        .d(z_mode_reg$d),
+        .q(z_mode_reg$q),
+        .clock(z_mode_reg$clock)
+    );
     encspeed_core$cfg_error_reg cfg_error_reg(
         .d(cfg_error_reg$d),
         .q(cfg_error_reg$q),
         .clock(cfg_error_reg$clock)
     );
-    encspeed_core$mode_reg mode_reg(
-        .d(mode_reg$d),
-        .q(mode_reg$q),
-        .clock(mode_reg$clock)
+    encspeed_core$mode_reset mode_reset(
+        .clock(mode_reset$clock),
+        .reset(mode_reset$reset),
+        .cfg_mode(mode_reset$cfg_mode),
+        .rst(mode_reset$rst),
+        .mode(mode_reset$mode)
     );
     
     // Update code
@@ -644,13 +664,15 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         mt$clock = clock;
         baseline$clock = clock;
         faults$clock = clock;
+        mode_reset$clock = clock;
         have_dir$clock = clock;
         last_dir$clock = clock;
         et_have$clock = clock;
         dt_reg$clock = clock;
         timeout_reg$clock = clock;
+        filter_reg$clock = clock;
+        z_mode_reg$clock = clock;
         cfg_error_reg$clock = clock;
-        mode_reg$clock = clock;
         tag_position$clock = clock;
         tag_nep$clock = clock;
         tag_ndt$clock = clock;
@@ -662,16 +684,20 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         et_have$d = et_have$q;
         dt_reg$d = dt_reg$q;
         timeout_reg$d = timeout_reg$q;
+        filter_reg$d = filter_reg$q;
+        z_mode_reg$d = z_mode_reg$q;
         cfg_error_reg$d = cfg_error_reg$q;
-        mode_reg$d = mode_reg$q;
         tag_position$d = tag_position$q;
         tag_nep$d = tag_nep$q;
         tag_ndt$d = tag_ndt$q;
         window_last$d = window_last$q;
         restart_pos$d = restart_pos$q;
         position_before$d = position_before$q;
-        mode_reg$d = cfg_mode;
-        rst = reset | (cfg_mode != mode_reg$q);
+        mode_reset$reset = reset;
+        mode_reset$cfg_mode = cfg_mode;
+        rst = mode_reset$rst;
+        filter_reg$d = cfg_filter;
+        z_mode_reg$d = cfg_z_mode;
         dt_eff = cfg_dt;
         if (cfg_dt == n_zero) begin
             dt_eff = default_dt;
@@ -688,12 +714,12 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         shift = shift_two;
         limit = limit_x4;
         limit_less_one = limit_less_one_x4;
-        if (cfg_mode == mode_x1) begin
+        if (mode_reset$mode == mode_x1) begin
             shift = shift_zero;
             limit = limit_x1;
             limit_less_one = limit_less_one_x1;
         end
-        else if (cfg_mode == mode_x2) begin
+        else if (mode_reset$mode == mode_x2) begin
             shift = shift_one;
             limit = limit_x2;
             limit_less_one = limit_less_one_x2;
@@ -705,7 +731,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         sync_b$level_in = enc_b;
         sync_z$level_in = enc_z;
         startup$reset = rst;
-        startup$cfg_filter = cfg_filter;
+        startup$cfg_filter = filter_reg$q;
         front_reset = startup$front_reset;
         filter_a$reset = rst;
         filter_b$reset = rst;
@@ -719,14 +745,14 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         decoder$reset = front_reset;
         decoder$a = filter_a$level_out;
         decoder$b = filter_b$level_out;
-        decoder$cfg_mode = cfg_mode;
+        decoder$cfg_mode = mode_reset$mode;
         counter$reset = front_reset;
         counter$step = decoder$step;
         counter$forward = decoder$forward;
         counter$z = filter_z$level_out;
         counter$limit = limit;
         counter$limit_less_one = limit_less_one;
-        counter$cfg_z_mode = cfg_z_mode;
+        counter$cfg_z_mode = z_mode_reg$q;
         first_step = decoder$step & (~have_dir$q | (decoder$forward ^ last_dir$q));
         engine_reset = rst | first_step;
         step_counted = decoder$step & ~rst;
@@ -740,7 +766,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         end
         timebase$reset = engine_reset;
         timebase$lep = decoder$step;
-        timebase$dt = dt_eff;
+        timebase$dt = dt_reg$q;
         timebase$timeout = timeout_reg$q;
         table1$reset = engine_reset;
         table1$lep = step_counted;
@@ -800,8 +826,8 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         pc$forward = decoder$forward;
         et$forward = decoder$forward;
         mt$forward = decoder$forward;
-        pc$cfg_dt = dt_eff;
-        mt$cfg_dt = dt_eff;
+        pc$cfg_dt = dt_reg$q;
+        mt$cfg_dt = dt_reg$q;
         et_have$d = ~engine_reset & (et_have$q | et$strobe);
         baseline$reset = rst;
         baseline$start = pc$strobe;
@@ -5677,6 +5703,38 @@ module encspeed_core$dt_reg(d,q,clock);
     output reg  [23:0] q;
     input wire  clock;
     
+    // Constant declarations
+    localparam  init = 24'h186a0;
+    
+    // Stub signals
+    reg  [23:0] dff$d;
+    wire  [23:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    encspeed_core$dt_reg$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // encspeed_core$dt_reg
+
+
+module encspeed_core$dt_reg$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
     // Update code (custom)
     initial begin
        q = 24'h0;
@@ -5686,7 +5744,7 @@ module encspeed_core$dt_reg(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_core$dt_reg
+endmodule // encspeed_core$dt_reg$dff
 
 
 module encspeed_core$et(clock,reset,step,forward,period,negative,strobe,stalled);
@@ -6137,6 +6195,8 @@ module encspeed_core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitches
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6148,16 +6208,20 @@ module encspeed_core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitches
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_core$filter_a$filtered filtered(
@@ -6170,10 +6234,15 @@ module encspeed_core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitches
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_core$filter_a$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_core$filter_a$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_core$filter_a$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_core$filter_a$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -6184,26 +6253,31 @@ module encspeed_core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitches
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -6211,7 +6285,8 @@ module encspeed_core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitches
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -6261,6 +6336,44 @@ module encspeed_core$filter_a$glitch_count(d,q,clock);
 endmodule // encspeed_core$filter_a$glitch_count
 
 
+module encspeed_core$filter_a$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_a$plus_two_reg
+
+
+module encspeed_core$filter_a$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_a$ready
+
+
 module encspeed_core$filter_a$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -6280,25 +6393,6 @@ module encspeed_core$filter_a$rejected_reg(d,q,clock);
 endmodule // encspeed_core$filter_a$rejected_reg
 
 
-module encspeed_core$filter_a$run(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_core$filter_a$run
-
-
 module encspeed_core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
     
     // Module arguments
@@ -6313,6 +6407,8 @@ module encspeed_core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6324,16 +6420,20 @@ module encspeed_core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_core$filter_b$filtered filtered(
@@ -6346,10 +6446,15 @@ module encspeed_core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_core$filter_b$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_core$filter_b$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_core$filter_b$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_core$filter_b$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -6360,26 +6465,31 @@ module encspeed_core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -6387,7 +6497,8 @@ module encspeed_core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -6437,6 +6548,44 @@ module encspeed_core$filter_b$glitch_count(d,q,clock);
 endmodule // encspeed_core$filter_b$glitch_count
 
 
+module encspeed_core$filter_b$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_b$plus_two_reg
+
+
+module encspeed_core$filter_b$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_b$ready
+
+
 module encspeed_core$filter_b$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -6456,7 +6605,7 @@ module encspeed_core$filter_b$rejected_reg(d,q,clock);
 endmodule // encspeed_core$filter_b$rejected_reg
 
 
-module encspeed_core$filter_b$run(d,q,clock);
+module encspeed_core$filter_reg(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6472,7 +6621,7 @@ module encspeed_core$filter_b$run(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_core$filter_b$run
+endmodule // encspeed_core$filter_reg
 
 
 module encspeed_core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
@@ -6489,6 +6638,8 @@ module encspeed_core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6500,16 +6651,20 @@ module encspeed_core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_core$filter_z$filtered filtered(
@@ -6522,10 +6677,15 @@ module encspeed_core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_core$filter_z$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_core$filter_z$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_core$filter_z$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_core$filter_z$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -6536,26 +6696,31 @@ module encspeed_core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -6563,7 +6728,8 @@ module encspeed_core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -6613,6 +6779,44 @@ module encspeed_core$filter_z$glitch_count(d,q,clock);
 endmodule // encspeed_core$filter_z$glitch_count
 
 
+module encspeed_core$filter_z$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_z$plus_two_reg
+
+
+module encspeed_core$filter_z$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$filter_z$ready
+
+
 module encspeed_core$filter_z$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -6630,25 +6834,6 @@ module encspeed_core$filter_z$rejected_reg(d,q,clock);
     end
           
 endmodule // encspeed_core$filter_z$rejected_reg
-
-
-module encspeed_core$filter_z$run(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_core$filter_z$run
 
 
 module encspeed_core$have_dir(d,q,clock);
@@ -6882,7 +7067,70 @@ module encspeed_core$last_dir(d,q,clock);
 endmodule // encspeed_core$last_dir
 
 
-module encspeed_core$mode_reg(d,q,clock);
+module encspeed_core$mode_reset(clock,reset,cfg_mode,rst,mode);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [1:0] cfg_mode;
+    output reg  rst;
+    output reg  [1:0] mode;
+    
+    // Stub signals
+    reg  [1:0] mode_reg$d;
+    wire  [1:0] mode_reg$q;
+    reg  mode_reg$clock;
+    reg  changed$d;
+    wire  changed$q;
+    reg  changed$clock;
+    
+    // Sub module instances
+    encspeed_core$mode_reset$mode_reg mode_reg(
+        .d(mode_reg$d),
+        .q(mode_reg$q),
+        .clock(mode_reg$clock)
+    );
+    encspeed_core$mode_reset$changed changed(
+        .d(changed$d),
+        .q(changed$q),
+        .clock(changed$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        mode_reg$clock = clock;
+        changed$clock = clock;
+        mode_reg$d = mode_reg$q;
+        changed$d = changed$q;
+        mode_reg$d = cfg_mode;
+        changed$d = ~reset & (cfg_mode != mode_reg$q);
+        rst = reset | changed$q;
+        mode = mode_reg$q;
+    end
+    
+endmodule // encspeed_core$mode_reset
+
+
+module encspeed_core$mode_reset$changed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$mode_reset$changed
+
+
+module encspeed_core$mode_reset$mode_reg(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -6898,7 +7146,7 @@ module encspeed_core$mode_reg(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_core$mode_reg
+endmodule // encspeed_core$mode_reset$mode_reg
 
 
 module encspeed_core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,stalled);
@@ -9195,3 +9443,22 @@ module encspeed_core$window_last(d,q,clock);
     end
           
 endmodule // encspeed_core$window_last
+
+
+module encspeed_core$z_mode_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$z_mode_reg

@@ -5,7 +5,7 @@
 // Derived: omega_lim = 0.9765625 rev/s at dt_cycles, timeout_dt = 1000 dt intervals, counters saturate at 16777215
 // Function: encspeed_core (unchanged, every port) with its M/T and n3 speeds corrected for the once-per-revolution ripple of an eccentric disc, from the runtime coefficients ecc_c, ecc_d, and the online identification of that eccentricity between two index pulses (Zhao; docs/eccentricity-hardware.md).
 // Speeds: two's complement, 41 bits, speed_frac_bits = 16: value = raw * 2^-16 omega_lim (one line per dt).
-// Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 255; A/B edge that restarts Table 1 to speed_strobe 261; mt_strobe (window end) to baseline_strobe 87.
+// Latency (cfg_filter = 0): A/B edge to position 4 cycles; speed calculator 255; A/B edge that restarts Table 1 to speed_strobe 261; mt_strobe (window end) to baseline_strobe 87; a configuration input acts 1 edge(s) after the edge that samples it (cfg_mode: the core's reset), cfg_dt moves the dt windows 2 edges after.
 // Correctors: sine table of 1024 entries x 24 bits; mtc_strobe 165 edges after the edge that raised mt_strobe; n3c_strobe 117 edges after the edge that raised speed_strobe; a request arriving while busy replaces a pending one (the latest wins).
 // Identification: a pulse on ident_arm (once an index has aligned the position) gathers the next revolution, index to index, of forward line edges; ident_done rises 2 edges after the edge that raised the closing index; sums 72 bits.
 // Ports:
@@ -14,11 +14,11 @@
 //   input  enc_a: encoder channel A, asynchronous (two-flop synchronised inside)
 //   input  enc_b: encoder channel B, asynchronous; forward = A leads B by 90 degrees
 //   input  enc_z: encoder index Z, asynchronous
-//   input  cfg_dt[23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)
-//   input  cfg_timeout[23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered
-//   input  cfg_filter[15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off
-//   input  cfg_mode[1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. A change resets the whole core (as reset)
-//   input  cfg_z_mode[1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset
+//   input  cfg_dt[23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered: dt_active shows a change one edge later, the dt windows use it from the edge after that
+//   input  cfg_timeout[23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid compare with it from the edge that samples it
+//   input  cfg_filter[15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off; registered (acts one edge later)
+//   input  cfg_mode[1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Registered: a change resets the whole core (as reset) at the edge after the one that samples it, with the new mode in place
+//   input  cfg_z_mode[1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset; registered (acts one edge later)
 //   input  clear_faults: clears fault_illegal, fault_overspeed, fault_revolution (an event in the same cycle wins)
 //   output position[31:0]: position in decoder steps, 0 .. lines*2^s - 1 (s = 0, 1, 2 in x1, x2, x4); wraps at a revolution, which is its definition
 //   output z_latch[31:0]: position latched at the last index edge (cfg_z_mode 2, 3)
@@ -249,13 +249,15 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
     reg  arm_pending$d;
     wire  arm_pending$q;
     reg  arm_pending$clock;
-    reg  [1:0] mode_reg$d;
-    wire  [1:0] mode_reg$q;
-    reg  mode_reg$clock;
+    reg  mode_reset$clock;
+    reg  mode_reset$reset;
+    reg  [1:0] mode_reset$cfg_mode;
+    wire  mode_reset$rst;
+    wire  [1:0] mode_reset$mode;
     
     // Local signals
     reg  arm_now;
-    reg  ident_reset;
+    reg  ecc_reset;
     reg  [31:0] counts_per_rev;
     reg  [1:0] shift;
     
@@ -376,10 +378,12 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         .q(arm_pending$q),
         .clock(arm_pending$clock)
     );
-    encspeed_ecc$mode_reg mode_reg(
-        .d(mode_reg$d),
-        .q(mode_reg$q),
-        .clock(mode_reg$clock)
+    encspeed_ecc$mode_reset mode_reset(
+        .clock(mode_reset$clock),
+        .reset(mode_reset$reset),
+        .cfg_mode(mode_reset$cfg_mode),
+        .rst(mode_reset$rst),
+        .mode(mode_reset$mode)
     );
     
     // Update code
@@ -389,10 +393,9 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         n3_corrector$clock = clock;
         line_tap$clock = clock;
         gatherer$clock = clock;
-        mode_reg$clock = clock;
+        mode_reset$clock = clock;
         aligned$clock = clock;
         arm_pending$clock = clock;
-        mode_reg$d = mode_reg$q;
         aligned$d = aligned$q;
         arm_pending$d = arm_pending$q;
         core$reset = reset;
@@ -437,18 +440,20 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         mt_t = core$mt_t;
         mt_negative = core$mt_negative;
         dt_active = core$dt_active;
-        mode_reg$d = cfg_mode;
+        mode_reset$reset = reset;
+        mode_reset$cfg_mode = cfg_mode;
+        ecc_reset = mode_reset$rst;
         shift = shift_two;
         counts_per_rev = lines_x4;
-        if (cfg_mode == mode_x1) begin
+        if (mode_reset$mode == mode_x1) begin
             shift = shift_zero;
             counts_per_rev = lines_x1;
         end
-        else if (cfg_mode == mode_x2) begin
+        else if (mode_reset$mode == mode_x2) begin
             shift = shift_one;
             counts_per_rev = lines_x2;
         end
-        corrector$reset = reset | (cfg_mode != mode_reg$q);
+        corrector$reset = ecc_reset;
         corrector$start = core$mt_strobe;
         corrector$position = core$position;
         corrector$mt_m = core$mt_m;
@@ -459,7 +464,7 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         corrector$counts_per_rev = counts_per_rev;
         corrector$coef_c = ecc_c;
         corrector$coef_d = ecc_d;
-        n3_corrector$reset = reset | (cfg_mode != mode_reg$q);
+        n3_corrector$reset = ecc_reset;
         n3_corrector$start = core$speed_strobe;
         n3_corrector$n3 = core$speed_n3;
         n3_corrector$position = core$speed_position;
@@ -473,20 +478,19 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         n3c_strobe = n3_corrector$valid;
         speed_mtc = corrector$speed_mtc;
         mtc_strobe = corrector$valid;
-        ident_reset = reset | (cfg_mode != mode_reg$q);
         arm_now = (ident_arm | arm_pending$q) & (aligned$q | core$index);
         arm_pending$d = (ident_arm | arm_pending$q) & ~arm_now;
         aligned$d = aligned$q | core$index;
-        if (ident_reset) begin
+        if (ecc_reset) begin
             arm_pending$d = 1'b0;
             aligned$d = 1'b0;
         end
-        line_tap$reset = ident_reset;
+        line_tap$reset = ecc_reset;
         line_tap$position = core$position;
         line_tap$forward = core$direction;
         line_tap$shift = shift;
         line_tap$counts_per_rev = counts_per_rev;
-        gatherer$reset = ident_reset;
+        gatherer$reset = ecc_reset;
         gatherer$arm = arm_now;
         gatherer$index = core$index;
         gatherer$line = line_tap$line;
@@ -818,12 +822,20 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
     reg  [23:0] timeout_reg$d;
     wire  [23:0] timeout_reg$q;
     reg  timeout_reg$clock;
+    reg  [15:0] filter_reg$d;
+    wire  [15:0] filter_reg$q;
+    reg  filter_reg$clock;
+    reg  [1:0] z_mode_reg$d;
+    wire  [1:0] z_mode_reg$q;
+    reg  z_mode_reg$clock;
     reg  cfg_error_reg$d;
     wire  cfg_error_reg$q;
     reg  cfg_error_reg$clock;
-    reg  [1:0] mode_reg$d;
-    wire  [1:0] mode_reg$q;
-    reg  mode_reg$clock;
+    reg  mode_reset$clock;
+    reg  mode_reset$reset;
+    reg  [1:0] mode_reset$cfg_mode;
+    wire  mode_reset$rst;
+    wire  [1:0] mode_reset$mode;
     
     // Local signals
     reg  [31:0] restart_now;
@@ -1104,15 +1116,27 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         .q(timeout_reg$q),
         .clock(timeout_reg$clock)
     );
+    encspeed_ecc$core$filter_reg filter_reg(
+        .d(filter_reg$d),
+        .q(filter_reg$q),
+        .clock(filter_reg$clock)
+    );
+    encspeed_ecc$core$z_mode_reg z_mode_reg(
+        .d(z_mode_reg$d),
+        .q(z_mode_reg$q),
+        .clock(z_mode_reg$clock)
+    );
     encspeed_ecc$core$cfg_error_reg cfg_error_reg(
         .d(cfg_error_reg$d),
         .q(cfg_error_reg$q),
         .clock(cfg_error_reg$clock)
     );
-    encspeed_ecc$core$mode_reg mode_reg(
-        .d(mode_reg$d),
-        .q(mode_reg$q),
-        .clock(mode_reg$clock)
+    encspeed_ecc$core$mode_reset mode_reset(
+        .clock(mode_reset$clock),
+        .reset(mode_reset$reset),
+        .cfg_mode(mode_reset$cfg_mode),
+        .rst(mode_reset$rst),
+        .mode(mode_reset$mode)
     );
     
     // Update code
@@ -1136,13 +1160,15 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         mt$clock = clock;
         baseline$clock = clock;
         faults$clock = clock;
+        mode_reset$clock = clock;
         have_dir$clock = clock;
         last_dir$clock = clock;
         et_have$clock = clock;
         dt_reg$clock = clock;
         timeout_reg$clock = clock;
+        filter_reg$clock = clock;
+        z_mode_reg$clock = clock;
         cfg_error_reg$clock = clock;
-        mode_reg$clock = clock;
         tag_position$clock = clock;
         tag_nep$clock = clock;
         tag_ndt$clock = clock;
@@ -1154,16 +1180,20 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         et_have$d = et_have$q;
         dt_reg$d = dt_reg$q;
         timeout_reg$d = timeout_reg$q;
+        filter_reg$d = filter_reg$q;
+        z_mode_reg$d = z_mode_reg$q;
         cfg_error_reg$d = cfg_error_reg$q;
-        mode_reg$d = mode_reg$q;
         tag_position$d = tag_position$q;
         tag_nep$d = tag_nep$q;
         tag_ndt$d = tag_ndt$q;
         window_last$d = window_last$q;
         restart_pos$d = restart_pos$q;
         position_before$d = position_before$q;
-        mode_reg$d = cfg_mode;
-        rst = reset | (cfg_mode != mode_reg$q);
+        mode_reset$reset = reset;
+        mode_reset$cfg_mode = cfg_mode;
+        rst = mode_reset$rst;
+        filter_reg$d = cfg_filter;
+        z_mode_reg$d = cfg_z_mode;
         dt_eff = cfg_dt;
         if (cfg_dt == n_zero) begin
             dt_eff = default_dt;
@@ -1180,12 +1210,12 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         shift = shift_two;
         limit = limit_x4;
         limit_less_one = limit_less_one_x4;
-        if (cfg_mode == mode_x1) begin
+        if (mode_reset$mode == mode_x1) begin
             shift = shift_zero;
             limit = limit_x1;
             limit_less_one = limit_less_one_x1;
         end
-        else if (cfg_mode == mode_x2) begin
+        else if (mode_reset$mode == mode_x2) begin
             shift = shift_one;
             limit = limit_x2;
             limit_less_one = limit_less_one_x2;
@@ -1197,7 +1227,7 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         sync_b$level_in = enc_b;
         sync_z$level_in = enc_z;
         startup$reset = rst;
-        startup$cfg_filter = cfg_filter;
+        startup$cfg_filter = filter_reg$q;
         front_reset = startup$front_reset;
         filter_a$reset = rst;
         filter_b$reset = rst;
@@ -1211,14 +1241,14 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         decoder$reset = front_reset;
         decoder$a = filter_a$level_out;
         decoder$b = filter_b$level_out;
-        decoder$cfg_mode = cfg_mode;
+        decoder$cfg_mode = mode_reset$mode;
         counter$reset = front_reset;
         counter$step = decoder$step;
         counter$forward = decoder$forward;
         counter$z = filter_z$level_out;
         counter$limit = limit;
         counter$limit_less_one = limit_less_one;
-        counter$cfg_z_mode = cfg_z_mode;
+        counter$cfg_z_mode = z_mode_reg$q;
         first_step = decoder$step & (~have_dir$q | (decoder$forward ^ last_dir$q));
         engine_reset = rst | first_step;
         step_counted = decoder$step & ~rst;
@@ -1232,7 +1262,7 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         end
         timebase$reset = engine_reset;
         timebase$lep = decoder$step;
-        timebase$dt = dt_eff;
+        timebase$dt = dt_reg$q;
         timebase$timeout = timeout_reg$q;
         table1$reset = engine_reset;
         table1$lep = step_counted;
@@ -1292,8 +1322,8 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         pc$forward = decoder$forward;
         et$forward = decoder$forward;
         mt$forward = decoder$forward;
-        pc$cfg_dt = dt_eff;
-        mt$cfg_dt = dt_eff;
+        pc$cfg_dt = dt_reg$q;
+        mt$cfg_dt = dt_reg$q;
         et_have$d = ~engine_reset & (et_have$q | et$strobe);
         baseline$reset = rst;
         baseline$start = pc$strobe;
@@ -6169,6 +6199,38 @@ module encspeed_ecc$core$dt_reg(d,q,clock);
     output reg  [23:0] q;
     input wire  clock;
     
+    // Constant declarations
+    localparam  init = 24'h186a0;
+    
+    // Stub signals
+    reg  [23:0] dff$d;
+    wire  [23:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    encspeed_ecc$core$dt_reg$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // encspeed_ecc$core$dt_reg
+
+
+module encspeed_ecc$core$dt_reg$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
     // Update code (custom)
     initial begin
        q = 24'h0;
@@ -6178,7 +6240,7 @@ module encspeed_ecc$core$dt_reg(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc$core$dt_reg
+endmodule // encspeed_ecc$core$dt_reg$dff
 
 
 module encspeed_ecc$core$et(clock,reset,step,forward,period,negative,strobe,stalled);
@@ -6629,6 +6691,8 @@ module encspeed_ecc$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glit
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6640,16 +6704,20 @@ module encspeed_ecc$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glit
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_ecc$core$filter_a$filtered filtered(
@@ -6662,10 +6730,15 @@ module encspeed_ecc$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glit
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_ecc$core$filter_a$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_ecc$core$filter_a$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_ecc$core$filter_a$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_ecc$core$filter_a$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -6676,26 +6749,31 @@ module encspeed_ecc$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glit
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -6703,7 +6781,8 @@ module encspeed_ecc$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glit
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -6753,6 +6832,44 @@ module encspeed_ecc$core$filter_a$glitch_count(d,q,clock);
 endmodule // encspeed_ecc$core$filter_a$glitch_count
 
 
+module encspeed_ecc$core$filter_a$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$filter_a$plus_two_reg
+
+
+module encspeed_ecc$core$filter_a$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$filter_a$ready
+
+
 module encspeed_ecc$core$filter_a$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -6772,25 +6889,6 @@ module encspeed_ecc$core$filter_a$rejected_reg(d,q,clock);
 endmodule // encspeed_ecc$core$filter_a$rejected_reg
 
 
-module encspeed_ecc$core$filter_a$run(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_ecc$core$filter_a$run
-
-
 module encspeed_ecc$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
     
     // Module arguments
@@ -6805,6 +6903,8 @@ module encspeed_ecc$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glit
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6816,16 +6916,20 @@ module encspeed_ecc$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glit
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_ecc$core$filter_b$filtered filtered(
@@ -6838,10 +6942,15 @@ module encspeed_ecc$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glit
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_ecc$core$filter_b$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_ecc$core$filter_b$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_ecc$core$filter_b$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_ecc$core$filter_b$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -6852,26 +6961,31 @@ module encspeed_ecc$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glit
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -6879,7 +6993,8 @@ module encspeed_ecc$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glit
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -6929,6 +7044,44 @@ module encspeed_ecc$core$filter_b$glitch_count(d,q,clock);
 endmodule // encspeed_ecc$core$filter_b$glitch_count
 
 
+module encspeed_ecc$core$filter_b$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$filter_b$plus_two_reg
+
+
+module encspeed_ecc$core$filter_b$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$filter_b$ready
+
+
 module encspeed_ecc$core$filter_b$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -6948,7 +7101,7 @@ module encspeed_ecc$core$filter_b$rejected_reg(d,q,clock);
 endmodule // encspeed_ecc$core$filter_b$rejected_reg
 
 
-module encspeed_ecc$core$filter_b$run(d,q,clock);
+module encspeed_ecc$core$filter_reg(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6964,7 +7117,7 @@ module encspeed_ecc$core$filter_b$run(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc$core$filter_b$run
+endmodule // encspeed_ecc$core$filter_reg
 
 
 module encspeed_ecc$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
@@ -6981,6 +7134,8 @@ module encspeed_ecc$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glit
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6992,16 +7147,20 @@ module encspeed_ecc$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glit
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_ecc$core$filter_z$filtered filtered(
@@ -7014,10 +7173,15 @@ module encspeed_ecc$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glit
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_ecc$core$filter_z$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_ecc$core$filter_z$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_ecc$core$filter_z$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_ecc$core$filter_z$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -7028,26 +7192,31 @@ module encspeed_ecc$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glit
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -7055,7 +7224,8 @@ module encspeed_ecc$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glit
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -7105,6 +7275,44 @@ module encspeed_ecc$core$filter_z$glitch_count(d,q,clock);
 endmodule // encspeed_ecc$core$filter_z$glitch_count
 
 
+module encspeed_ecc$core$filter_z$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$filter_z$plus_two_reg
+
+
+module encspeed_ecc$core$filter_z$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$filter_z$ready
+
+
 module encspeed_ecc$core$filter_z$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -7122,25 +7330,6 @@ module encspeed_ecc$core$filter_z$rejected_reg(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$filter_z$rejected_reg
-
-
-module encspeed_ecc$core$filter_z$run(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_ecc$core$filter_z$run
 
 
 module encspeed_ecc$core$have_dir(d,q,clock);
@@ -7374,7 +7563,70 @@ module encspeed_ecc$core$last_dir(d,q,clock);
 endmodule // encspeed_ecc$core$last_dir
 
 
-module encspeed_ecc$core$mode_reg(d,q,clock);
+module encspeed_ecc$core$mode_reset(clock,reset,cfg_mode,rst,mode);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [1:0] cfg_mode;
+    output reg  rst;
+    output reg  [1:0] mode;
+    
+    // Stub signals
+    reg  [1:0] mode_reg$d;
+    wire  [1:0] mode_reg$q;
+    reg  mode_reg$clock;
+    reg  changed$d;
+    wire  changed$q;
+    reg  changed$clock;
+    
+    // Sub module instances
+    encspeed_ecc$core$mode_reset$mode_reg mode_reg(
+        .d(mode_reg$d),
+        .q(mode_reg$q),
+        .clock(mode_reg$clock)
+    );
+    encspeed_ecc$core$mode_reset$changed changed(
+        .d(changed$d),
+        .q(changed$q),
+        .clock(changed$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        mode_reg$clock = clock;
+        changed$clock = clock;
+        mode_reg$d = mode_reg$q;
+        changed$d = changed$q;
+        mode_reg$d = cfg_mode;
+        changed$d = ~reset & (cfg_mode != mode_reg$q);
+        rst = reset | changed$q;
+        mode = mode_reg$q;
+    end
+    
+endmodule // encspeed_ecc$core$mode_reset
+
+
+module encspeed_ecc$core$mode_reset$changed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$mode_reset$changed
+
+
+module encspeed_ecc$core$mode_reset$mode_reg(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -7390,7 +7642,7 @@ module encspeed_ecc$core$mode_reg(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc$core$mode_reg
+endmodule // encspeed_ecc$core$mode_reset$mode_reg
 
 
 module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,stalled);
@@ -9687,6 +9939,25 @@ module encspeed_ecc$core$window_last(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$window_last
+
+
+module encspeed_ecc$core$z_mode_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$z_mode_reg
 
 
 module encspeed_ecc$corrector(clock,reset,start,position,mt_m,mt_t,mt_negative,cfg_dt,shift,counts_per_rev,coef_c,coef_d,speed_mtc,valid);
@@ -17582,7 +17853,70 @@ module encspeed_ecc$line_tap$since(d,q,clock);
 endmodule // encspeed_ecc$line_tap$since
 
 
-module encspeed_ecc$mode_reg(d,q,clock);
+module encspeed_ecc$mode_reset(clock,reset,cfg_mode,rst,mode);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [1:0] cfg_mode;
+    output reg  rst;
+    output reg  [1:0] mode;
+    
+    // Stub signals
+    reg  [1:0] mode_reg$d;
+    wire  [1:0] mode_reg$q;
+    reg  mode_reg$clock;
+    reg  changed$d;
+    wire  changed$q;
+    reg  changed$clock;
+    
+    // Sub module instances
+    encspeed_ecc$mode_reset$mode_reg mode_reg(
+        .d(mode_reg$d),
+        .q(mode_reg$q),
+        .clock(mode_reg$clock)
+    );
+    encspeed_ecc$mode_reset$changed changed(
+        .d(changed$d),
+        .q(changed$q),
+        .clock(changed$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        mode_reg$clock = clock;
+        changed$clock = clock;
+        mode_reg$d = mode_reg$q;
+        changed$d = changed$q;
+        mode_reg$d = cfg_mode;
+        changed$d = ~reset & (cfg_mode != mode_reg$q);
+        rst = reset | changed$q;
+        mode = mode_reg$q;
+    end
+    
+endmodule // encspeed_ecc$mode_reset
+
+
+module encspeed_ecc$mode_reset$changed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$mode_reset$changed
+
+
+module encspeed_ecc$mode_reset$mode_reg(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -17598,7 +17932,7 @@ module encspeed_ecc$mode_reg(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_ecc$mode_reg
+endmodule // encspeed_ecc$mode_reset$mode_reg
 
 
 module encspeed_ecc$n3_corrector(clock,reset,start,n3,position,nep,ndt,shift,counts_per_rev,coef_c,coef_d,n3c,valid);

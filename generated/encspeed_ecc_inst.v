@@ -11,11 +11,11 @@ encspeed_ecc u_encspeed_ecc (
     .enc_a            (enc_a           ), // input: encoder channel A, asynchronous (two-flop synchronised inside)
     .enc_b            (enc_b           ), // input: encoder channel B, asynchronous; forward = A leads B by 90 degrees
     .enc_z            (enc_z           ), // input: encoder index Z, asynchronous
-    .cfg_dt           (cfg_dt          ), // input [23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)
-    .cfg_timeout      (cfg_timeout     ), // input [23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered
-    .cfg_filter       (cfg_filter      ), // input [15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off
-    .cfg_mode         (cfg_mode        ), // input [1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. A change resets the whole core (as reset)
-    .cfg_z_mode       (cfg_z_mode      ), // input [1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset
+    .cfg_dt           (cfg_dt          ), // input [23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered: dt_active shows a change one edge later, the dt windows use it from the edge after that
+    .cfg_timeout      (cfg_timeout     ), // input [23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid compare with it from the edge that samples it
+    .cfg_filter       (cfg_filter      ), // input [15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off; registered (acts one edge later)
+    .cfg_mode         (cfg_mode        ), // input [1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Registered: a change resets the whole core (as reset) at the edge after the one that samples it, with the new mode in place
+    .cfg_z_mode       (cfg_z_mode      ), // input [1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset; registered (acts one edge later)
     .clear_faults     (clear_faults    ), // input: clears fault_illegal, fault_overspeed, fault_revolution (an event in the same cycle wins)
     .position         (position        ), // output [31:0]: position in decoder steps, 0 .. lines*2^s - 1 (s = 0, 1, 2 in x1, x2, x4); wraps at a revolution, which is its definition
     .z_latch          (z_latch         ), // output [31:0]: position latched at the last index edge (cfg_z_mode 2, 3)

@@ -545,12 +545,20 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     reg  [23:0] timeout_reg$d;
     wire  [23:0] timeout_reg$q;
     reg  timeout_reg$clock;
+    reg  [15:0] filter_reg$d;
+    wire  [15:0] filter_reg$q;
+    reg  filter_reg$clock;
+    reg  [1:0] z_mode_reg$d;
+    wire  [1:0] z_mode_reg$q;
+    reg  z_mode_reg$clock;
     reg  cfg_error_reg$d;
     wire  cfg_error_reg$q;
     reg  cfg_error_reg$clock;
-    reg  [1:0] mode_reg$d;
-    wire  [1:0] mode_reg$q;
-    reg  mode_reg$clock;
+    reg  mode_reset$clock;
+    reg  mode_reset$reset;
+    reg  [1:0] mode_reset$cfg_mode;
+    wire  mode_reset$rst;
+    wire  [1:0] mode_reset$mode;
     
     // Local signals
     reg  [31:0] restart_now;
@@ -831,15 +839,27 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         .q(timeout_reg$q),
         .clock(timeout_reg$clock)
     );
+    encspeed_wb$core$filter_reg filter_reg(
+        .d(filter_reg$d),
+        .q(filter_reg$q),
+        .clock(filter_reg$clock)
+    );
+    encspeed_wb$core$z_mode_reg z_mode_reg(
+        .d(z_mode_reg$d),
+        .q(z_mode_reg$q),
+        .clock(z_mode_reg$clock)
+    );
     encspeed_wb$core$cfg_error_reg cfg_error_reg(
         .d(cfg_error_reg$d),
         .q(cfg_error_reg$q),
         .clock(cfg_error_reg$clock)
     );
-    encspeed_wb$core$mode_reg mode_reg(
-        .d(mode_reg$d),
-        .q(mode_reg$q),
-        .clock(mode_reg$clock)
+    encspeed_wb$core$mode_reset mode_reset(
+        .clock(mode_reset$clock),
+        .reset(mode_reset$reset),
+        .cfg_mode(mode_reset$cfg_mode),
+        .rst(mode_reset$rst),
+        .mode(mode_reset$mode)
     );
     
     // Update code
@@ -863,13 +883,15 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         mt$clock = clock;
         baseline$clock = clock;
         faults$clock = clock;
+        mode_reset$clock = clock;
         have_dir$clock = clock;
         last_dir$clock = clock;
         et_have$clock = clock;
         dt_reg$clock = clock;
         timeout_reg$clock = clock;
+        filter_reg$clock = clock;
+        z_mode_reg$clock = clock;
         cfg_error_reg$clock = clock;
-        mode_reg$clock = clock;
         tag_position$clock = clock;
         tag_nep$clock = clock;
         tag_ndt$clock = clock;
@@ -881,16 +903,20 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         et_have$d = et_have$q;
         dt_reg$d = dt_reg$q;
         timeout_reg$d = timeout_reg$q;
+        filter_reg$d = filter_reg$q;
+        z_mode_reg$d = z_mode_reg$q;
         cfg_error_reg$d = cfg_error_reg$q;
-        mode_reg$d = mode_reg$q;
         tag_position$d = tag_position$q;
         tag_nep$d = tag_nep$q;
         tag_ndt$d = tag_ndt$q;
         window_last$d = window_last$q;
         restart_pos$d = restart_pos$q;
         position_before$d = position_before$q;
-        mode_reg$d = cfg_mode;
-        rst = reset | (cfg_mode != mode_reg$q);
+        mode_reset$reset = reset;
+        mode_reset$cfg_mode = cfg_mode;
+        rst = mode_reset$rst;
+        filter_reg$d = cfg_filter;
+        z_mode_reg$d = cfg_z_mode;
         dt_eff = cfg_dt;
         if (cfg_dt == n_zero) begin
             dt_eff = default_dt;
@@ -907,12 +933,12 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         shift = shift_two;
         limit = limit_x4;
         limit_less_one = limit_less_one_x4;
-        if (cfg_mode == mode_x1) begin
+        if (mode_reset$mode == mode_x1) begin
             shift = shift_zero;
             limit = limit_x1;
             limit_less_one = limit_less_one_x1;
         end
-        else if (cfg_mode == mode_x2) begin
+        else if (mode_reset$mode == mode_x2) begin
             shift = shift_one;
             limit = limit_x2;
             limit_less_one = limit_less_one_x2;
@@ -924,7 +950,7 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         sync_b$level_in = enc_b;
         sync_z$level_in = enc_z;
         startup$reset = rst;
-        startup$cfg_filter = cfg_filter;
+        startup$cfg_filter = filter_reg$q;
         front_reset = startup$front_reset;
         filter_a$reset = rst;
         filter_b$reset = rst;
@@ -938,14 +964,14 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         decoder$reset = front_reset;
         decoder$a = filter_a$level_out;
         decoder$b = filter_b$level_out;
-        decoder$cfg_mode = cfg_mode;
+        decoder$cfg_mode = mode_reset$mode;
         counter$reset = front_reset;
         counter$step = decoder$step;
         counter$forward = decoder$forward;
         counter$z = filter_z$level_out;
         counter$limit = limit;
         counter$limit_less_one = limit_less_one;
-        counter$cfg_z_mode = cfg_z_mode;
+        counter$cfg_z_mode = z_mode_reg$q;
         first_step = decoder$step & (~have_dir$q | (decoder$forward ^ last_dir$q));
         engine_reset = rst | first_step;
         step_counted = decoder$step & ~rst;
@@ -959,7 +985,7 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         end
         timebase$reset = engine_reset;
         timebase$lep = decoder$step;
-        timebase$dt = dt_eff;
+        timebase$dt = dt_reg$q;
         timebase$timeout = timeout_reg$q;
         table1$reset = engine_reset;
         table1$lep = step_counted;
@@ -1019,8 +1045,8 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         pc$forward = decoder$forward;
         et$forward = decoder$forward;
         mt$forward = decoder$forward;
-        pc$cfg_dt = dt_eff;
-        mt$cfg_dt = dt_eff;
+        pc$cfg_dt = dt_reg$q;
+        mt$cfg_dt = dt_reg$q;
         et_have$d = ~engine_reset & (et_have$q | et$strobe);
         baseline$reset = rst;
         baseline$start = pc$strobe;
@@ -5896,6 +5922,38 @@ module encspeed_wb$core$dt_reg(d,q,clock);
     output reg  [23:0] q;
     input wire  clock;
     
+    // Constant declarations
+    localparam  init = 24'h186a0;
+    
+    // Stub signals
+    reg  [23:0] dff$d;
+    wire  [23:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    encspeed_wb$core$dt_reg$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // encspeed_wb$core$dt_reg
+
+
+module encspeed_wb$core$dt_reg$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
     // Update code (custom)
     initial begin
        q = 24'h0;
@@ -5905,7 +5963,7 @@ module encspeed_wb$core$dt_reg(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_wb$core$dt_reg
+endmodule // encspeed_wb$core$dt_reg$dff
 
 
 module encspeed_wb$core$et(clock,reset,step,forward,period,negative,strobe,stalled);
@@ -6356,6 +6414,8 @@ module encspeed_wb$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitc
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6367,16 +6427,20 @@ module encspeed_wb$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitc
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_wb$core$filter_a$filtered filtered(
@@ -6389,10 +6453,15 @@ module encspeed_wb$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitc
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_wb$core$filter_a$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_wb$core$filter_a$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_wb$core$filter_a$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_wb$core$filter_a$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -6403,26 +6472,31 @@ module encspeed_wb$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitc
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -6430,7 +6504,8 @@ module encspeed_wb$core$filter_a(clock,reset,level_in,cfg_filter,level_out,glitc
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -6480,6 +6555,44 @@ module encspeed_wb$core$filter_a$glitch_count(d,q,clock);
 endmodule // encspeed_wb$core$filter_a$glitch_count
 
 
+module encspeed_wb$core$filter_a$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$filter_a$plus_two_reg
+
+
+module encspeed_wb$core$filter_a$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$filter_a$ready
+
+
 module encspeed_wb$core$filter_a$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -6499,25 +6612,6 @@ module encspeed_wb$core$filter_a$rejected_reg(d,q,clock);
 endmodule // encspeed_wb$core$filter_a$rejected_reg
 
 
-module encspeed_wb$core$filter_a$run(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$filter_a$run
-
-
 module encspeed_wb$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
     
     // Module arguments
@@ -6532,6 +6626,8 @@ module encspeed_wb$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitc
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6543,16 +6639,20 @@ module encspeed_wb$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitc
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_wb$core$filter_b$filtered filtered(
@@ -6565,10 +6665,15 @@ module encspeed_wb$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitc
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_wb$core$filter_b$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_wb$core$filter_b$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_wb$core$filter_b$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_wb$core$filter_b$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -6579,26 +6684,31 @@ module encspeed_wb$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitc
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -6606,7 +6716,8 @@ module encspeed_wb$core$filter_b(clock,reset,level_in,cfg_filter,level_out,glitc
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -6656,6 +6767,44 @@ module encspeed_wb$core$filter_b$glitch_count(d,q,clock);
 endmodule // encspeed_wb$core$filter_b$glitch_count
 
 
+module encspeed_wb$core$filter_b$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$filter_b$plus_two_reg
+
+
+module encspeed_wb$core$filter_b$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$filter_b$ready
+
+
 module encspeed_wb$core$filter_b$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -6675,7 +6824,7 @@ module encspeed_wb$core$filter_b$rejected_reg(d,q,clock);
 endmodule // encspeed_wb$core$filter_b$rejected_reg
 
 
-module encspeed_wb$core$filter_b$run(d,q,clock);
+module encspeed_wb$core$filter_reg(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6691,7 +6840,7 @@ module encspeed_wb$core$filter_b$run(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_wb$core$filter_b$run
+endmodule // encspeed_wb$core$filter_reg
 
 
 module encspeed_wb$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitches,rejected);
@@ -6708,6 +6857,8 @@ module encspeed_wb$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitc
     // Constant declarations
     localparam  run_zero = 16'h0;
     localparam  run_one = 16'h1;
+    localparam  run_two = 16'h2;
+    localparam  above_one = 16'hfffe;
     localparam  count_zero = 16'h0;
     localparam  count_one = 16'h1;
     localparam  count_max = 16'hffff;
@@ -6719,16 +6870,20 @@ module encspeed_wb$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitc
     reg  rejected_reg$d;
     wire  rejected_reg$q;
     reg  rejected_reg$clock;
-    reg  [15:0] run$d;
-    wire  [15:0] run$q;
-    reg  run$clock;
+    reg  [15:0] plus_two_reg$d;
+    wire  [15:0] plus_two_reg$q;
+    reg  plus_two_reg$clock;
+    reg  ready$d;
+    wire  ready$q;
+    reg  ready$clock;
     reg  [15:0] glitch_count$d;
     wire  [15:0] glitch_count$q;
     reg  glitch_count$clock;
     
     // Local signals
     reg  differs;
-    reg  [15:0] run_next;
+    reg  [15:0] plus_two;
+    reg  filter_at_most_one;
     
     // Sub module instances
     encspeed_wb$core$filter_z$filtered filtered(
@@ -6741,10 +6896,15 @@ module encspeed_wb$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitc
         .q(rejected_reg$q),
         .clock(rejected_reg$clock)
     );
-    encspeed_wb$core$filter_z$run run(
-        .d(run$d),
-        .q(run$q),
-        .clock(run$clock)
+    encspeed_wb$core$filter_z$plus_two_reg plus_two_reg(
+        .d(plus_two_reg$d),
+        .q(plus_two_reg$q),
+        .clock(plus_two_reg$clock)
+    );
+    encspeed_wb$core$filter_z$ready ready(
+        .d(ready$d),
+        .q(ready$q),
+        .clock(ready$clock)
     );
     encspeed_wb$core$filter_z$glitch_count glitch_count(
         .d(glitch_count$d),
@@ -6755,26 +6915,31 @@ module encspeed_wb$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitc
     // Update code
     always @(*) begin
         filtered$clock = clock;
-        run$clock = clock;
+        plus_two_reg$clock = clock;
+        ready$clock = clock;
         glitch_count$clock = clock;
         rejected_reg$clock = clock;
         filtered$d = filtered$q;
-        run$d = run$q;
+        plus_two_reg$d = plus_two_reg$q;
+        ready$d = ready$q;
         glitch_count$d = glitch_count$q;
         rejected_reg$d = rejected_reg$q;
         differs = level_in ^ filtered$q;
-        run_next = run$q + run_one;
-        run$d = run_zero;
+        plus_two = plus_two_reg$q ^ run_two;
+        filter_at_most_one = (cfg_filter & above_one) == run_zero;
+        plus_two_reg$d = run_zero;
+        ready$d = filter_at_most_one;
         rejected_reg$d = 1'b0;
         if (differs) begin
-            if (run_next >= cfg_filter) begin
+            if (ready$q) begin
                 filtered$d = level_in;
             end
             else begin
-                run$d = run_next;
+                plus_two_reg$d = (plus_two + run_one) ^ run_two;
+                ready$d = plus_two >= cfg_filter;
             end
         end
-        else if (run$q != run_zero) begin
+        else if (plus_two_reg$q != run_zero) begin
             rejected_reg$d = 1'b1;
             if (glitch_count$q != count_max) begin
                 glitch_count$d = glitch_count$q + count_one;
@@ -6782,7 +6947,8 @@ module encspeed_wb$core$filter_z(clock,reset,level_in,cfg_filter,level_out,glitc
         end
         if (reset) begin
             filtered$d = 1'b0;
-            run$d = run_zero;
+            plus_two_reg$d = run_zero;
+            ready$d = filter_at_most_one;
             glitch_count$d = count_zero;
             rejected_reg$d = 1'b0;
         end
@@ -6832,6 +6998,44 @@ module encspeed_wb$core$filter_z$glitch_count(d,q,clock);
 endmodule // encspeed_wb$core$filter_z$glitch_count
 
 
+module encspeed_wb$core$filter_z$plus_two_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$filter_z$plus_two_reg
+
+
+module encspeed_wb$core$filter_z$ready(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$filter_z$ready
+
+
 module encspeed_wb$core$filter_z$rejected_reg(d,q,clock);
     
     // Module arguments
@@ -6849,25 +7053,6 @@ module encspeed_wb$core$filter_z$rejected_reg(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$filter_z$rejected_reg
-
-
-module encspeed_wb$core$filter_z$run(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$filter_z$run
 
 
 module encspeed_wb$core$have_dir(d,q,clock);
@@ -7101,7 +7286,70 @@ module encspeed_wb$core$last_dir(d,q,clock);
 endmodule // encspeed_wb$core$last_dir
 
 
-module encspeed_wb$core$mode_reg(d,q,clock);
+module encspeed_wb$core$mode_reset(clock,reset,cfg_mode,rst,mode);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [1:0] cfg_mode;
+    output reg  rst;
+    output reg  [1:0] mode;
+    
+    // Stub signals
+    reg  [1:0] mode_reg$d;
+    wire  [1:0] mode_reg$q;
+    reg  mode_reg$clock;
+    reg  changed$d;
+    wire  changed$q;
+    reg  changed$clock;
+    
+    // Sub module instances
+    encspeed_wb$core$mode_reset$mode_reg mode_reg(
+        .d(mode_reg$d),
+        .q(mode_reg$q),
+        .clock(mode_reg$clock)
+    );
+    encspeed_wb$core$mode_reset$changed changed(
+        .d(changed$d),
+        .q(changed$q),
+        .clock(changed$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        mode_reg$clock = clock;
+        changed$clock = clock;
+        mode_reg$d = mode_reg$q;
+        changed$d = changed$q;
+        mode_reg$d = cfg_mode;
+        changed$d = ~reset & (cfg_mode != mode_reg$q);
+        rst = reset | changed$q;
+        mode = mode_reg$q;
+    end
+    
+endmodule // encspeed_wb$core$mode_reset
+
+
+module encspeed_wb$core$mode_reset$changed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$mode_reset$changed
+
+
+module encspeed_wb$core$mode_reset$mode_reg(d,q,clock);
     
     // Module arguments
     input wire  [1:0] d;
@@ -7117,7 +7365,7 @@ module encspeed_wb$core$mode_reg(d,q,clock);
        q <= d;
     end
           
-endmodule // encspeed_wb$core$mode_reg
+endmodule // encspeed_wb$core$mode_reset$mode_reg
 
 
 module encspeed_wb$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,stalled);
@@ -9414,6 +9662,25 @@ module encspeed_wb$core$window_last(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$window_last
+
+
+module encspeed_wb$core$z_mode_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$z_mode_reg
 
 
 module encspeed_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);

@@ -379,3 +379,73 @@ fn baseline_strobe_follows_the_window_end_by_the_block_latency() {
         .filter(|&&b| b > windows[0] + 71)
         .all(|b| windows.contains(&(b - 71))));
 }
+
+#[test]
+fn configuration_inputs_act_after_the_documented_edges() {
+    // The latencies by hand: the core registers its configuration inputs once.
+    let lat = Latency::new(&params(), 0);
+    assert_eq!((lat.config_to_effect, lat.cfg_dt_to_window), (1, 2));
+
+    // cfg_mode: move the shaft, stop, then change the mode first sampled at edge K. The reset
+    // it causes acts at edge K + 1: the position is still counted after edge K, 0 after K + 1.
+    const K: usize = 600;
+    let mut m = CoreModel::new(&params());
+    let outs: Vec<CoreOutputs> = (0..K as u64 + 4)
+        .map(|k| {
+            let (a, b) = quad(k.min(400), 16, true);
+            m.step(CoreInputs {
+                reset: k < 3,
+                enc_a: a,
+                enc_b: b,
+                cfg_dt: DT,
+                cfg_mode: if k < K as u64 { 2 } else { 1 },
+                ..Default::default()
+            })
+        })
+        .collect();
+    assert!(outs[K - 1].position > 50, "{}", outs[K - 1].position);
+    assert_eq!(
+        outs[K].position,
+        outs[K - 1].position,
+        "edge K still counts"
+    );
+    assert_eq!(outs[K + 1].position, 0, "the reset acts at edge K + 1");
+
+    // cfg_dt: the window that ends at edge E compares at edge E − 1 with the dt register,
+    // loaded at edge E − 2. Raising dt first sampled at edge E − 2 cancels that window end;
+    // first sampled at E − 1, it does not. Window ends are read at baseline_strobe, which
+    // follows each by window_to_baseline_strobe (shorter than dt = 200, so none is skipped).
+    const DT_W: u64 = 200;
+    let lat = Latency::new(&params_dt(DT_W), 0);
+    let bl = lat.window_to_baseline_strobe as usize;
+    let run = |change_at: usize| -> Vec<usize> {
+        let mut m = CoreModel::new(&params_dt(DT_W));
+        (0..2000)
+            .map(|k| {
+                m.step(CoreInputs {
+                    reset: k < 3,
+                    cfg_dt: if k < change_at { DT_W } else { 60_000 },
+                    ..Default::default()
+                })
+            })
+            .enumerate()
+            .filter(|(_, o)| o.baseline_strobe)
+            .map(|(k, _)| k - bl)
+            .collect()
+    };
+    let ends = run(usize::MAX);
+    let e1 = ends[2];
+    assert_eq!(ends[3] - e1, DT_W as usize, "{ends:?}");
+    let e = e1 + DT_W as usize;
+    let late = run(e - 1);
+    let early = run(e - lat.cfg_dt_to_window as usize);
+    assert!(
+        late.contains(&e),
+        "sampled at E − 1: the end at E stays: {late:?}"
+    );
+    assert!(
+        !early.contains(&e),
+        "sampled at E − 2: no end at E: {early:?}"
+    );
+    assert!(early.contains(&e1), "{early:?}");
+}

@@ -714,3 +714,26 @@ fn chain_on_a_long_reversing_run() {
         }
     }
 }
+
+#[test]
+fn filter_length_change_acts_one_edge_later() {
+    // Reset at edge 0 with L = 4, input 1 from edge 1, L = 1 first sampled at edge 2. By hand:
+    // edge 1: run 0 → 1, and the decision for edge 2 uses edge 1's L = 4 (1 + 1 ≥ 4: no);
+    // edge 2: not ready, run 2, and the decision for edge 3 uses L = 1 (2 + 1 ≥ 1); edge 3:
+    // the 1 passes. A comparison with the same edge's L would have passed it at edge 2.
+    let mut f = GlitchFilter::new(8, 8);
+    let ls = [4u64, 4, 1, 1, 1];
+    let out: Vec<bool> = ls
+        .iter()
+        .enumerate()
+        .map(|(k, &l)| {
+            f.step(GlitchFilterInputs {
+                reset: k == 0,
+                level_in: k > 0,
+                cfg_filter: l,
+            })
+            .level_out
+        })
+        .collect();
+    assert_eq!(out, [false, false, false, true, true]);
+}

@@ -43,11 +43,18 @@
 //!   resets the calculator, so every result uses the mode the core is in.
 //! - **Configuration.** `cfg_dt` = 0 means the generation default dt, 1 is used as 2 and
 //!   flags `cfg_error`; `cfg_timeout` = 0 means the generation default timeout; `cfg_mode` 3
-//!   decodes as x4 and flags `cfg_error`. `cfg_dt` and `cfg_timeout` are registered (a change
-//!   acts one edge later); `cfg_filter`, `cfg_mode` and `cfg_z_mode` act at once. A change
-//!   of `cfg_mode` resets the whole core at the edge that sees it (as `reset` does:
-//!   position, estimators, counters and faults; a count in one mode means nothing in
-//!   another), then the start-up hold runs again.
+//!   decodes as x4 and flags `cfg_error`. Every configuration input is registered
+//!   once, at the core's edge, and the blocks read the registers (the glitch filters
+//!   compare `cfg_filter` into a register an edge ahead, the same delay): a change of
+//!   `cfg_filter` or `cfg_z_mode` acts from the edge after the one that samples it;
+//!   `stalled` and `valid` compare with a new `cfg_timeout` from the edge that samples
+//!   it. The effective dt is registered (`dt_active`, one edge later) and the time bases
+//!   compare with that register an edge ahead, so a `cfg_dt` change moves the dt windows
+//!   from two edges after it is sampled. A change of `cfg_mode` is registered with
+//!   the mode ([`ModeReset`]): the edge after the one that sees it resets the whole core
+//!   with the new mode in place (as `reset` does: position, estimators, counters and
+//!   faults; a count in one mode means nothing in another), then the start-up hold runs
+//!   again. `cfg_error` is registered from the inputs (one edge).
 //! - **Faults.** `fault_illegal` (both channels changed between two samples),
 //!   `fault_overspeed` (the A or B filter rejected a level shorter than `cfg_filter`
 //!   cycles: a glitch, or edges closer than the filter passes) and `fault_revolution` (a
@@ -75,6 +82,7 @@ use crate::frontend::{
 use crate::params::{
     max_value, Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
 };
+use crate::top::mode_reset::ModeReset;
 use crate::top::port_fields::port_struct;
 use serde::{Deserialize, Serialize};
 
@@ -209,7 +217,9 @@ pub fn mode_shift(cfg_mode: u8) -> u32 {
 pub struct CoreModel {
     default_dt: u64,
     default_timeout: u64,
-    mode_reg: u8,
+    mode_reset: ModeReset,
+    filter_reg: u64,
+    z_mode_reg: u8,
     lines: u64,
     fill: u64,
     front_done: bool,
@@ -222,6 +232,9 @@ pub struct CoreModel {
     have_dir: bool,
     last_dir: bool,
     dt_reg: u64,
+    /// `dt_reg` one edge later: the dt Table 1's time base compares with (its `due` register
+    /// is set an edge ahead from the dt register).
+    dt_window: u64,
     timeout_reg: u64,
     engine: Table1,
     primed: bool,
@@ -259,7 +272,9 @@ impl CoreModel {
         CoreModel {
             default_dt: p.dt_cycles(),
             default_timeout: p.timeout_dt(),
-            mode_reg: 0,
+            mode_reset: ModeReset::new(),
+            filter_reg: 0,
+            z_mode_reg: 0,
             lines: u64::from(p.lines()),
             fill: 0,
             front_done: false,
@@ -271,6 +286,7 @@ impl CoreModel {
             have_dir: false,
             last_dir: false,
             dt_reg: p.dt_cycles(),
+            dt_window: p.dt_cycles(),
             timeout_reg: p.timeout_dt(),
             engine: Table1::new(p),
             primed: false,
@@ -314,7 +330,7 @@ impl CoreModel {
         self.primed
     }
 
-    /// The effective dt (clock cycles) the time bases use at the next edge.
+    /// The effective dt register (clock cycles), the value of `dt_active`.
     pub fn dt(&self) -> u64 {
         self.dt_reg
     }
@@ -331,11 +347,11 @@ impl CoreModel {
     /// One rising clock edge with `inp` applied; returns the outputs after the edge.
     pub fn step(&mut self, inp: CoreInputs) -> CoreOutputs {
         assert!(inp.cfg_mode <= MODE_INVALID, "cfg_mode = {}", inp.cfg_mode);
-        let shift = mode_shift(inp.cfg_mode);
-        // A change of cfg_mode resets the core, as `reset` does (a count in one mode means
-        // nothing in another).
-        let rst = inp.reset || inp.cfg_mode != self.mode_reg;
-        self.mode_reg = inp.cfg_mode;
+        // The configuration registers before the edge (module docs: Configuration).
+        let rst = self.mode_reset.rst(inp.reset);
+        let mode = self.mode_reset.mode();
+        let shift = mode_shift(mode);
+        let (cfg_filter, cfg_z_mode) = (self.filter_reg, self.z_mode_reg);
         // Registered values before the edge.
         let filt = self.filters.each_ref().map(|f| f.outputs());
         let dec = self.decoder.state();
@@ -346,7 +362,7 @@ impl CoreModel {
         let et = self.et.outputs();
         let mt = self.mt.outputs();
 
-        let settling = self.fill < SYNC_CYCLES + inp.cfg_filter.max(1);
+        let settling = self.fill < SYNC_CYCLES + cfg_filter.max(1);
         // The hold applies one edge after the rule that sets it (a register: the rule's
         // comparison does not reach the reset of the decoder and the counter in one cycle).
         let front_reset = rst || self.front_hold;
@@ -362,6 +378,8 @@ impl CoreModel {
             f.step(GlitchFilterInputs {
                 reset: rst,
                 level_in: self.sync[c][1],
+                // The filters compare an edge ahead: they take the input, which acts one
+                // edge later, as the filter register does.
                 cfg_filter: inp.cfg_filter,
             });
         }
@@ -369,7 +387,7 @@ impl CoreModel {
             reset: front_reset,
             a: filt[A].level_out,
             b: filt[B].level_out,
-            cfg_mode: inp.cfg_mode,
+            cfg_mode: mode,
         });
         self.position.step(CounterInputs {
             reset: front_reset,
@@ -377,12 +395,12 @@ impl CoreModel {
             forward: dec.forward,
             z: filt[Z].level_out,
             counts_per_rev: (self.lines << shift) & max_value(POSITION_BITS),
-            cfg_z_mode: inp.cfg_z_mode,
+            cfg_z_mode,
         });
         if engine_reset {
             self.engine.reset_with_pulse(dec.step && !rst);
         } else {
-            self.engine.step(dec.step, self.dt_reg);
+            self.engine.step(dec.step, self.dt_window);
         }
         self.primed = !engine_reset && (self.primed || restart);
         let calc_start = t1.update && primed_before;
@@ -444,14 +462,11 @@ impl CoreModel {
             }
         }
         let (r, st, fw) = (rst, dec.step, dec.forward);
-        // The window timers take the dt that dt_reg takes at this edge: they compare a
-        // cycle ahead, so their windows are those of dt_reg.
-        let dt_next = self.dt_eff(inp.cfg_dt);
         self.pc.step(PcInputs {
             reset: r,
             step: st,
             forward: fw,
-            cfg_dt: dt_next,
+            cfg_dt: self.dt_reg,
         });
         self.et.step(EtInputs {
             reset: r,
@@ -462,7 +477,7 @@ impl CoreModel {
             reset: r,
             step: st,
             forward: fw,
-            cfg_dt: dt_next,
+            cfg_dt: self.dt_reg,
         });
         self.baseline.step(BaselineSpeedsInputs {
             reset: rst,
@@ -502,7 +517,11 @@ impl CoreModel {
             self.last_dir = dec.forward;
         }
         self.cfg_error = inp.cfg_dt == 1 || inp.cfg_mode == MODE_INVALID;
-        self.dt_reg = dt_next;
+        self.dt_window = self.dt_reg;
+        self.dt_reg = self.dt_eff(inp.cfg_dt);
+        self.mode_reset.step(inp.reset, inp.cfg_mode);
+        self.filter_reg = inp.cfg_filter;
+        self.z_mode_reg = inp.cfg_z_mode;
         self.timeout_reg = if inp.cfg_timeout == 0 {
             self.default_timeout
         } else {

@@ -31,6 +31,7 @@ use crate::ecc::mt_corrector::{MtCorrectorModel, MtJob};
 use crate::ecc::n3_corrector::{N3CorrectorModel, N3Job};
 use crate::params::{Params, SPEED_FRAC_BITS};
 use crate::top::core::{mode_shift, CoreInputs, CoreModel, CoreOutputs};
+use crate::top::mode_reset::ModeReset;
 use crate::top::port_fields::{visit_fields, PortFields, PortValue};
 use serde::{Deserialize, Serialize};
 
@@ -138,7 +139,7 @@ pub struct EccTopModel {
     counts_per_rev: [u64; 3],
     aligned: bool,
     arm_pending: bool,
-    mode_reg: u8,
+    mode_reset: ModeReset,
 }
 
 impl EccTopModel {
@@ -157,7 +158,7 @@ impl EccTopModel {
             counts_per_rev: [0, 1, 2].map(|s| p.counts_per_rev(s)),
             aligned: false,
             arm_pending: false,
-            mode_reg: 0,
+            mode_reset: ModeReset::new(),
         }
     }
 
@@ -165,15 +166,17 @@ impl EccTopModel {
     pub fn step(&mut self, inp: EccTopInputs) -> EccTopOutputs {
         let c = &inp.core;
         let before = self.core.outputs();
-        let rst = c.reset || c.cfg_mode != self.mode_reg;
-        self.mode_reg = c.cfg_mode;
+        // The core's reset and mode, from the same registered rule.
+        let rst = self.mode_reset.rst(c.reset);
+        let shift = mode_shift(self.mode_reset.mode());
+        self.mode_reset.step(c.reset, c.cfg_mode);
         let job = before.mt_strobe.then_some(MtJob {
             position: before.position,
             mt_m: before.mt_m,
             mt_t: before.mt_t,
             mt_negative: before.mt_negative,
             cfg_dt: before.dt_active,
-            mode_shift: mode_shift(c.cfg_mode),
+            mode_shift: shift,
             coef_c: inp.ecc_c,
             coef_d: inp.ecc_d,
         });
@@ -182,13 +185,12 @@ impl EccTopModel {
             position: before.speed_position,
             nep: before.speed_nep,
             ndt: before.speed_ndt,
-            mode_shift: mode_shift(c.cfg_mode),
+            mode_shift: shift,
             coef_c: inp.ecc_c,
             coef_d: inp.ecc_d,
         });
         let mtc = self.mtc.step(rst, job);
         let n3c = self.n3c.step(rst, n3_job);
-        let shift = mode_shift(c.cfg_mode);
         let counts_per_rev = self.counts_per_rev[shift as usize];
         let tap = self
             .line_tap

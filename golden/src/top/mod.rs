@@ -5,6 +5,7 @@ pub mod core;
 pub mod ecc_top;
 pub mod ecc_wb_top;
 pub mod error_budget;
+pub mod mode_reset;
 pub mod port_fields;
 pub mod ports;
 pub mod wb_top;

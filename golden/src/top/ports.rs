@@ -106,11 +106,11 @@ pub fn core_ports(counter_bits: u32) -> Vec<Port> {
     ];
     v.extend(encoder_inputs());
     v.extend([
-        i("cfg_dt", n, "dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered (acts one edge later)"),
-        i("cfg_timeout", n, "zero-speed timeout in dt intervals; 0 = the generation default; registered"),
-        i("cfg_filter", FILTER_BITS, "glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off"),
-        i("cfg_mode", 2, "decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. A change resets the whole core (as reset)"),
-        i("cfg_z_mode", 2, "index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset"),
+        i("cfg_dt", n, "dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered: dt_active shows a change one edge later, the dt windows use it from the edge after that"),
+        i("cfg_timeout", n, "zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid compare with it from the edge that samples it"),
+        i("cfg_filter", FILTER_BITS, "glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off; registered (acts one edge later)"),
+        i("cfg_mode", 2, "decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Registered: a change resets the whole core (as reset) at the edge after the one that samples it, with the new mode in place"),
+        i("cfg_z_mode", 2, "index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset; registered (acts one edge later)"),
         i("clear_faults", 1, "clears fault_illegal, fault_overspeed, fault_revolution (an event in the same cycle wins)"),
         o("position", POSITION_BITS, "position in decoder steps, 0 .. lines*2^s - 1 (s = 0, 1, 2 in x1, x2, x4); wraps at a revolution, which is its definition"),
         o("z_latch", POSITION_BITS, "position latched at the last index edge (cfg_z_mode 2, 3)"),
@@ -193,6 +193,15 @@ pub struct Latency {
     /// the edge after which `baseline_strobe` shows the window's speeds: the baseline
     /// block samples the start one edge later and takes 2·(N + F + 1) + 4 edges.
     pub window_to_baseline_strobe: u32,
+    /// From the edge that samples a new `cfg_filter`, `cfg_z_mode` or `cfg_mode` to the
+    /// edge at which it acts (a new `cfg_mode`: the reset of the core): the core registers
+    /// its configuration inputs once, 1. (`stalled` compares with the registered
+    /// `cfg_timeout`, so a new timeout shows after the edge that samples it.)
+    pub config_to_effect: u32,
+    /// From the edge that samples a new `cfg_dt` to the first edge whose dt window uses it
+    /// (Rairán's time base, PC and M/T): the dt register (`dt_active`), then the time bases'
+    /// comparison made an edge ahead, 2.
+    pub cfg_dt_to_window: u32,
 }
 
 impl Latency {
@@ -206,6 +215,8 @@ impl Latency {
             speed_calc,
             edge_to_speed_strobe: edge_to_position + 1 + speed_calc + 1,
             window_to_baseline_strobe: 1 + baseline,
+            config_to_effect: 1,
+            cfg_dt_to_window: 2,
         }
     }
 }

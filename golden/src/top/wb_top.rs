@@ -23,7 +23,7 @@
 //! The reset is shared: `reset` resets the core and the register file at the same edge.
 //! After reset `CTRL` is 0 (x1, Z ignored), `CFG_DT` and `CFG_TIMEOUT` are 0 (the
 //! generation defaults), `CFG_FILTER` is 0 (off). A write that changes `CTRL.MODE` resets
-//! the whole core at the edge that sees the new mode (the core's own rule,
+//! the whole core at the edge after the one that sees the new mode (the core's own rule,
 //! [`crate::top::core`]); the register file keeps its state.
 
 use crate::bus::reg_file::WbBus;

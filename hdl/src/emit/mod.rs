@@ -70,8 +70,9 @@ fn header(module: &str, p: &Params, function: &str, extra: &[String], ports: &[P
         p.speed_frac_bits()
     ));
     line(format!(
-        "Latency (cfg_filter = 0): A/B edge to position {} cycles; speed calculator {}; A/B edge that restarts Table 1 to speed_strobe {}; mt_strobe (window end) to baseline_strobe {}.",
-        latency.edge_to_position, latency.speed_calc, latency.edge_to_speed_strobe, latency.window_to_baseline_strobe
+        "Latency (cfg_filter = 0): A/B edge to position {} cycles; speed calculator {}; A/B edge that restarts Table 1 to speed_strobe {}; mt_strobe (window end) to baseline_strobe {}; a configuration input acts {} edge(s) after the edge that samples it (cfg_mode: the core's reset), cfg_dt moves the dt windows {} edges after.",
+        latency.edge_to_position, latency.speed_calc, latency.edge_to_speed_strobe, latency.window_to_baseline_strobe,
+        latency.config_to_effect, latency.cfg_dt_to_window
     ));
     for t in extra {
         line(t.clone());
@@ -181,6 +182,21 @@ pub fn ports_markdown(p: &Params) -> String {
          window end of the PC and M/T counters (the baseline block samples it one edge later \
          and takes 2(N + F + 1) + 4 edges), whatever `cfg_filter`.\n",
         Latency::new(p, 0).window_to_baseline_strobe
+    ));
+    let l = Latency::new(p, 0);
+    md.push_str(&format!(
+        "\n**Configuration.** The core registers every configuration input once, at its \
+         edge (the glitch filters compare `cfg_filter` into a register an edge ahead), so an \
+         input reaches at most one carry chain before a register. A new `cfg_filter` or `cfg_z_mode` \
+         acts {} edge after the edge that samples it; `stalled` and `valid` compare with a \
+         new `cfg_timeout` from the edge that samples it. A new `cfg_mode` \
+         resets the whole core (as `reset` does) {} edge after the edge that samples it, \
+         with the new mode in place. The effective dt of a new `cfg_dt` shows in \
+         `dt_active` one edge after the edge that samples it, and the dt windows (Rairán's \
+         time base, PC, M/T) use it from {} edges after that edge. `cfg_error` shows one edge after. \
+         `reset` is not delayed. The same figures are `config_to_effect` and \
+         `cfg_dt_to_window` in the manifest.\n",
+        l.config_to_effect, l.config_to_effect, l.cfg_dt_to_window
     ));
     md.push_str(&format!(
         "\n## `encspeed_ecc`: the core with the eccentricity-corrected speeds\n\n\

@@ -195,10 +195,11 @@ lines per dt = (HI:LO as a signed 64-bit integer) / 2^16.
 the dt of Rairán's time base (0 = `DT_DEFAULT`), `CFG_TIMEOUT` the zero-speed timeout
 (0 = `TIMEOUT_DEFAULT`), `CFG_FILTER` the glitch filter (0 = off). **Any change of
 `CTRL.MODE` resets the whole core** (position, estimators, baselines, fault flags and
-counters; the start-up hold runs again) at the edge that sees the new mode, because a
-count in one mode means nothing in another. The register file keeps its values. So
-firmware writes `CTRL` first and then waits for `STATUS.VALID` before reading a speed;
-writing `CTRL` with an unchanged `MODE` (e.g. to change `Z_MODE`) resets nothing.
+counters; the start-up hold runs again) at the edge after the one that sees the new
+mode, because a count in one mode means nothing in another. The register file keeps its
+values. So firmware writes `CTRL` first and then waits for `STATUS.VALID` before
+reading a speed; writing `CTRL` with an unchanged `MODE` (e.g. to change `Z_MODE`)
+resets nothing.
 `MODE` = 3 and `CFG_DT` = 1 are illegal: they set `STATUS.CFG_ERROR` and `VALID` stays low.
 
 ## Faults: clear_faults

@@ -14,11 +14,21 @@
 //!
 //! Latency: a level held for at least max(L, 1) cycles shows on `level_out` max(L, 1) clock
 //! edges after the first edge that sampled it (L ≤ 1: that same edge, i.e. one register).
-//! Since run + 1 < L ≤ 2^F − 1 whenever run is incremented, run never overflows.
 //!
-//! Reset (synchronous, active high): `level_out` = 0, run = 0, `glitches` = 0. A channel that
-//! is high at reset therefore reaches `level_out` after max(L, 1) edges: consumers must not
-//! take that for a transition (see `golden::frontend`, start-up).
+//! The pass decision run + 1 ≥ L is made an edge ahead and registered (`ready`), so that
+//! the output register's enable comes from a flip-flop and not from a carry chain: for the
+//! run after an edge, run' + 1 ≥ L is L ≤ 1 when run' = 0 (a bit test) and run + 2 ≥ L
+//! when run' = run + 1. The block keeps run + 2 mod 2^F with bit 1 inverted
+//! (`plus_two_reg`) instead of the run, so that its power-up and reset value 0 is run = 0
+//! and the comparison is one carry chain from a register. L is therefore the `cfg_filter`
+//! of the edge before: a change acts one edge later (the model says the same). Since
+//! run + 1 < L ≤ 2^F − 1 whenever run is incremented, run ≤ 2^F − 2, and run + 2 wraps only
+//! at run = 2^F − 2, where `ready` is already set (2^F − 1 ≥ L), so the run after the edge
+//! is 0 and the wrapped value is not compared.
+//!
+//! Reset (synchronous, active high): `level_out` = 0, run = 0, `glitches` = 0, `ready` =
+//! (L ≤ 1). A channel that is high at reset therefore reaches `level_out` after max(L, 1)
+//! edges: consumers must not take that for a transition (see `golden::frontend`, start-up).
 
 use rust_hdl::prelude::*;
 
@@ -41,12 +51,21 @@ pub struct GlitchFilter<const F: usize, const G: usize> {
     pub rejected: Signal<Out, Bit>,
     filtered: DFF<Bit>,
     rejected_reg: DFF<Bit>,
-    pub(crate) run: DFF<Bits<F>>,
+    /// run + 2 mod 2^F with bit 1 inverted (power-up and reset value 0 is run = 0).
+    plus_two_reg: DFF<Bits<F>>,
+    /// run + 1 ≥ L for this cycle's run and the L of the edge before.
+    ready: DFF<Bit>,
     glitch_count: DFF<Bits<G>>,
     differs: Signal<Local, Bit>,
-    run_next: Signal<Local, Bits<F>>,
+    /// run + 2 mod 2^F.
+    plus_two: Signal<Local, Bits<F>>,
+    /// L ≤ 1: every change passes (a test of the bits, no chain).
+    filter_at_most_one: Signal<Local, Bit>,
     run_zero: Constant<Bits<F>>,
     run_one: Constant<Bits<F>>,
+    run_two: Constant<Bits<F>>,
+    /// Every bit but bit 0.
+    above_one: Constant<Bits<F>>,
     count_zero: Constant<Bits<G>>,
     count_one: Constant<Bits<G>>,
     count_max: Constant<Bits<G>>,
@@ -55,8 +74,8 @@ pub struct GlitchFilter<const F: usize, const G: usize> {
 impl<const F: usize, const G: usize> Default for GlitchFilter<F, G> {
     fn default() -> Self {
         assert!(
-            (1..=32).contains(&F) && (1..=32).contains(&G),
-            "widths 1..=32"
+            (2..=32).contains(&F) && (1..=32).contains(&G),
+            "widths: F 2..=32, G 1..=32"
         );
         Self {
             clock: Default::default(),
@@ -68,12 +87,16 @@ impl<const F: usize, const G: usize> Default for GlitchFilter<F, G> {
             rejected: Default::default(),
             filtered: Default::default(),
             rejected_reg: Default::default(),
-            run: Default::default(),
+            plus_two_reg: Default::default(),
+            ready: Default::default(),
             glitch_count: Default::default(),
             differs: Default::default(),
-            run_next: Default::default(),
+            plus_two: Default::default(),
+            filter_at_most_one: Default::default(),
             run_zero: Constant::new(0.into()),
             run_one: Constant::new(1.into()),
+            run_two: Constant::new(2.into()),
+            above_one: Constant::new((((1u64 << F) - 1) & !1).into()),
             count_zero: Constant::new(0.into()),
             count_one: Constant::new(1.into()),
             count_max: Constant::new(((1u64 << G) - 1).into()),
@@ -84,19 +107,35 @@ impl<const F: usize, const G: usize> Default for GlitchFilter<F, G> {
 impl<const F: usize, const G: usize> Logic for GlitchFilter<F, G> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, filtered, run, glitch_count, rejected_reg);
+        dff_setup!(
+            self,
+            clock,
+            filtered,
+            plus_two_reg,
+            ready,
+            glitch_count,
+            rejected_reg
+        );
         // The input differs from the filtered level.
         self.differs.next = self.level_in.val() ^ self.filtered.q.val();
-        self.run_next.next = self.run.q.val() + self.run_one.val();
-        self.run.d.next = self.run_zero.val();
+        self.plus_two.next = self.plus_two_reg.q.val() ^ self.run_two.val();
+        self.filter_at_most_one.next =
+            (self.cfg_filter.val() & self.above_one.val()) == self.run_zero.val();
+        // By default the run after the edge is 0: the next decision is L ≤ 1.
+        self.plus_two_reg.d.next = self.run_zero.val();
+        self.ready.d.next = self.filter_at_most_one.val();
         self.rejected_reg.d.next = false;
         if self.differs.val() {
-            if self.run_next.val() >= self.cfg_filter.val() {
+            if self.ready.q.val() {
                 self.filtered.d.next = self.level_in.val();
             } else {
-                self.run.d.next = self.run_next.val();
+                // run' = run + 1: its run + 2 is this cycle's run + 3, and the next
+                // decision run' + 1 ≥ L is run + 2 ≥ L.
+                self.plus_two_reg.d.next =
+                    (self.plus_two.val() + self.run_one.val()) ^ self.run_two.val();
+                self.ready.d.next = self.plus_two.val() >= self.cfg_filter.val();
             }
-        } else if self.run.q.val() != self.run_zero.val() {
+        } else if self.plus_two_reg.q.val() != self.run_zero.val() {
             self.rejected_reg.d.next = true;
             if self.glitch_count.q.val() != self.count_max.val() {
                 self.glitch_count.d.next = self.glitch_count.q.val() + self.count_one.val();
@@ -104,7 +143,8 @@ impl<const F: usize, const G: usize> Logic for GlitchFilter<F, G> {
         }
         if self.reset.val() {
             self.filtered.d.next = false;
-            self.run.d.next = self.run_zero.val();
+            self.plus_two_reg.d.next = self.run_zero.val();
+            self.ready.d.next = self.filter_at_most_one.val();
             self.glitch_count.d.next = self.count_zero.val();
             self.rejected_reg.d.next = false;
         }
@@ -181,7 +221,7 @@ mod tests {
         );
         verilator_lint(
             "glitch_filter",
-            &glitch_filter_verilog::<1, 1>("glitch_filter"),
+            &glitch_filter_verilog::<2, 1>("glitch_filter"),
         );
     }
 }

@@ -31,6 +31,7 @@ use crate::frontend::quadrature_decoder::QuadratureDecoder;
 use crate::frontend::startup::Startup;
 use crate::frontend::two_flop_sync::TwoFlopSync;
 use crate::top::fault_flags::FaultFlags;
+use crate::top::mode_reset::ModeReset;
 use golden::params::{
     Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
 };
@@ -160,10 +161,14 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     have_dir: DFF<Bit>,
     last_dir: DFF<Bit>,
     et_have: DFF<Bit>,
-    dt_reg: DFF<Bits<N>>,
+    /// The effective dt, powered up at the generation default (the window timers read it
+    /// at every edge, reset included, and never see a dt below 2).
+    dt_reg: DFFWithInit<Bits<N>>,
     timeout_reg: DFF<Bits<N>>,
+    filter_reg: DFF<Bits<FB>>,
+    z_mode_reg: DFF<Bits<2>>,
     cfg_error_reg: DFF<Bit>,
-    mode_reg: DFF<Bits<2>>,
+    mode_reset: ModeReset,
     rst: Signal<Local, Bit>,
     front_reset: Signal<Local, Bit>,
     first_step: Signal<Local, Bit>,
@@ -282,10 +287,12 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             have_dir: Default::default(),
             last_dir: Default::default(),
             et_have: Default::default(),
-            dt_reg: Default::default(),
+            dt_reg: DFFWithInit::new(p.dt_cycles().into()),
             timeout_reg: Default::default(),
+            filter_reg: Default::default(),
+            z_mode_reg: Default::default(),
             cfg_error_reg: Default::default(),
-            mode_reg: Default::default(),
+            mode_reset: Default::default(),
             rst: Default::default(),
             front_reset: Default::default(),
             first_step: Default::default(),
@@ -322,7 +329,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
     fn update(&mut self) {
         clock!(
             self, clock, sync_a, sync_b, sync_z, startup, filter_a, filter_b, filter_z, decoder,
-            counter, timebase, table1, calc, tag, hold, pc, et, mt, baseline, faults
+            counter, timebase, table1, calc, tag, hold, pc, et, mt, baseline, faults, mode_reset
         );
         dff_setup!(
             self,
@@ -332,8 +339,9 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             et_have,
             dt_reg,
             timeout_reg,
+            filter_reg,
+            z_mode_reg,
             cfg_error_reg,
-            mode_reg,
             tag_position,
             tag_nep,
             tag_ndt,
@@ -342,12 +350,18 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             position_before
         );
 
-        // A change of cfg_mode resets the core as `reset` does.
-        self.mode_reg.d.next = self.cfg_mode.val();
-        self.rst.next = self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
+        // Configuration, registered once here: the blocks read registers (the glitch filters
+        // compare cfg_filter into a register an edge ahead), so an input reaches at most one
+        // carry chain before a register (docs/ports.md gives when a change acts). A change of cfg_mode resets the core
+        // as `reset` does, at the edge after the one that sees it, with the new mode in place.
+        self.mode_reset.reset.next = self.reset.val();
+        self.mode_reset.cfg_mode.next = self.cfg_mode.val();
+        self.rst.next = self.mode_reset.rst.val();
+        self.filter_reg.d.next = self.cfg_filter.val();
+        self.z_mode_reg.d.next = self.cfg_z_mode.val();
 
-        // Configuration: defaults for 0, dt below 2 used as 2 (tested on the bits, no
-        // comparator); log2 of steps per line.
+        // Defaults for 0, dt below 2 used as 2 (tested on the bits, no comparator); log2 of
+        // steps per line.
         self.dt_eff.next = self.cfg_dt.val();
         if self.cfg_dt.val() == self.n_zero.val() {
             self.dt_eff.next = self.default_dt.val();
@@ -364,11 +378,11 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.shift.next = self.shift_two.val();
         self.limit.next = self.limit_x4.val();
         self.limit_less_one.next = self.limit_less_one_x4.val();
-        if self.cfg_mode.val() == self.mode_x1.val() {
+        if self.mode_reset.mode.val() == self.mode_x1.val() {
             self.shift.next = self.shift_zero.val();
             self.limit.next = self.limit_x1.val();
             self.limit_less_one.next = self.limit_less_one_x1.val();
-        } else if self.cfg_mode.val() == self.mode_x2.val() {
+        } else if self.mode_reset.mode.val() == self.mode_x2.val() {
             self.shift.next = self.shift_one.val();
             self.limit.next = self.limit_x2.val();
             self.limit_less_one.next = self.limit_less_one_x2.val();
@@ -382,7 +396,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.sync_b.level_in.next = self.enc_b.val();
         self.sync_z.level_in.next = self.enc_z.val();
         self.startup.reset.next = self.rst.val();
-        self.startup.cfg_filter.next = self.cfg_filter.val();
+        self.startup.cfg_filter.next = self.filter_reg.q.val();
         self.front_reset.next = self.startup.front_reset.val();
         self.filter_a.reset.next = self.rst.val();
         self.filter_b.reset.next = self.rst.val();
@@ -390,20 +404,22 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.filter_a.level_in.next = self.sync_a.level_out.val();
         self.filter_b.level_in.next = self.sync_b.level_out.val();
         self.filter_z.level_in.next = self.sync_z.level_out.val();
+        // The filters compare an edge ahead with the L they are given: the input acts in
+        // them one edge later, as the filter register does in the start-up hold.
         self.filter_a.cfg_filter.next = self.cfg_filter.val();
         self.filter_b.cfg_filter.next = self.cfg_filter.val();
         self.filter_z.cfg_filter.next = self.cfg_filter.val();
         self.decoder.reset.next = self.front_reset.val();
         self.decoder.a.next = self.filter_a.level_out.val();
         self.decoder.b.next = self.filter_b.level_out.val();
-        self.decoder.cfg_mode.next = self.cfg_mode.val();
+        self.decoder.cfg_mode.next = self.mode_reset.mode.val();
         self.counter.reset.next = self.front_reset.val();
         self.counter.step.next = self.decoder.step.val();
         self.counter.forward.next = self.decoder.forward.val();
         self.counter.z.next = self.filter_z.level_out.val();
         self.counter.limit.next = self.limit.val();
         self.counter.limit_less_one.next = self.limit_less_one.val();
-        self.counter.cfg_z_mode.next = self.cfg_z_mode.val();
+        self.counter.cfg_z_mode.next = self.z_mode_reg.q.val();
 
         // The first step of a direction (after reset or a reversal) restarts the estimator
         // at that step, counted as its first pulse.
@@ -423,7 +439,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         // Rairán: Table 1 on decoder steps, primed by its first restart.
         self.timebase.reset.next = self.engine_reset.val();
         self.timebase.lep.next = self.decoder.step.val();
-        self.timebase.dt.next = self.dt_eff.val();
+        self.timebase.dt.next = self.dt_reg.q.val();
         self.timebase.timeout.next = self.timeout_reg.q.val();
         self.table1.reset.next = self.engine_reset.val();
         self.table1.lep.next = self.step_counted.val();
@@ -491,10 +507,10 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.pc.forward.next = self.decoder.forward.val();
         self.et.forward.next = self.decoder.forward.val();
         self.mt.forward.next = self.decoder.forward.val();
-        // The window timers compare a cycle ahead: they take the dt that dt_reg takes at
-        // this edge, so their windows are those of dt_reg.
-        self.pc.cfg_dt.next = self.dt_eff.val();
-        self.mt.cfg_dt.next = self.dt_eff.val();
+        // The time bases read the dt register: a dt change shows in dt_active one edge after
+        // it is sampled and moves the windows from the edge after that.
+        self.pc.cfg_dt.next = self.dt_reg.q.val();
+        self.mt.cfg_dt.next = self.dt_reg.q.val();
         self.et_have.d.next =
             !self.engine_reset.val() & (self.et_have.q.val() | self.et.strobe.val());
         self.baseline.reset.next = self.rst.val();

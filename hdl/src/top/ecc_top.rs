@@ -26,6 +26,7 @@ use crate::ecc::line_tap::LineTap;
 use crate::ecc::mt_corrector::MtCorrector;
 use crate::ecc::n3_corrector::N3Corrector;
 use crate::top::core::EncspeedCore;
+use crate::top::mode_reset::ModeReset;
 use golden::params::{Params, ERROR_COUNT_BITS, FILTER_BITS, POSITION_BITS};
 use rust_hdl::prelude::*;
 
@@ -171,8 +172,10 @@ pub struct EncspeedEcc<const N: usize, const P: usize, const S: usize, const CW:
     aligned: DFF<Bit>,
     arm_pending: DFF<Bit>,
     arm_now: Signal<Local, Bit>,
-    ident_reset: Signal<Local, Bit>,
-    mode_reg: DFF<Bits<2>>,
+    /// The reset of the corrector and the identification: the core's (`reset` or a mode
+    /// change), from the same registered rule.
+    ecc_reset: Signal<Local, Bit>,
+    mode_reset: ModeReset,
     counts_per_rev: Signal<Local, Bits<C>>,
     shift: Signal<Local, Bits<2>>,
     mode_x1: Constant<Bits<2>>,
@@ -262,8 +265,8 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EncspeedEc
             aligned: Default::default(),
             arm_pending: Default::default(),
             arm_now: Default::default(),
-            ident_reset: Default::default(),
-            mode_reg: Default::default(),
+            ecc_reset: Default::default(),
+            mode_reset: Default::default(),
             counts_per_rev: Default::default(),
             shift: Default::default(),
             mode_x1: Constant::new(u64::from(golden::frontend::MODE_X1).into()),
@@ -290,9 +293,10 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
             corrector,
             n3_corrector,
             line_tap,
-            gatherer
+            gatherer,
+            mode_reset
         );
-        dff_setup!(self, clock, mode_reg, aligned, arm_pending);
+        dff_setup!(self, clock, aligned, arm_pending);
         self.core.reset.next = self.reset.val();
         self.core.enc_a.next = self.enc_a.val();
         self.core.enc_b.next = self.enc_b.val();
@@ -337,18 +341,19 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         self.dt_active.next = self.core.dt_active.val();
         // The corrector resets with the core (reset or a change of cfg_mode) and takes the
         // decoder's steps per line and revolution as the core does.
-        self.mode_reg.d.next = self.cfg_mode.val();
+        self.mode_reset.reset.next = self.reset.val();
+        self.mode_reset.cfg_mode.next = self.cfg_mode.val();
+        self.ecc_reset.next = self.mode_reset.rst.val();
         self.shift.next = self.shift_two.val();
         self.counts_per_rev.next = self.lines_x4.val();
-        if self.cfg_mode.val() == self.mode_x1.val() {
+        if self.mode_reset.mode.val() == self.mode_x1.val() {
             self.shift.next = self.shift_zero.val();
             self.counts_per_rev.next = self.lines_x1.val();
-        } else if self.cfg_mode.val() == self.mode_x2.val() {
+        } else if self.mode_reset.mode.val() == self.mode_x2.val() {
             self.shift.next = self.shift_one.val();
             self.counts_per_rev.next = self.lines_x2.val();
         }
-        self.corrector.reset.next =
-            self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
+        self.corrector.reset.next = self.ecc_reset.val();
         self.corrector.start.next = self.core.mt_strobe.val();
         self.corrector.position.next = self.core.position.val();
         self.corrector.mt_m.next = self.core.mt_m.val();
@@ -359,8 +364,7 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         self.corrector.counts_per_rev.next = self.counts_per_rev.val();
         self.corrector.coef_c.next = self.ecc_c.val();
         self.corrector.coef_d.next = self.ecc_d.val();
-        self.n3_corrector.reset.next =
-            self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
+        self.n3_corrector.reset.next = self.ecc_reset.val();
         self.n3_corrector.start.next = self.core.speed_strobe.val();
         self.n3_corrector.n3.next = self.core.speed_n3.val();
         self.n3_corrector.position.next = self.core.speed_position.val();
@@ -377,22 +381,21 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         // Identification: the core's line edges, gathered index to index after an arm. The
         // gatherer needs the position aligned by an index: an arm before the aligning index
         // waits for it (golden::top::ecc_top).
-        self.ident_reset.next = self.reset.val() | (self.cfg_mode.val() != self.mode_reg.q.val());
         self.arm_now.next = (self.ident_arm.val() | self.arm_pending.q.val())
             & (self.aligned.q.val() | self.core.index.val());
         self.arm_pending.d.next =
             (self.ident_arm.val() | self.arm_pending.q.val()) & !self.arm_now.val();
         self.aligned.d.next = self.aligned.q.val() | self.core.index.val();
-        if self.ident_reset.val() {
+        if self.ecc_reset.val() {
             self.arm_pending.d.next = false;
             self.aligned.d.next = false;
         }
-        self.line_tap.reset.next = self.ident_reset.val();
+        self.line_tap.reset.next = self.ecc_reset.val();
         self.line_tap.position.next = self.core.position.val();
         self.line_tap.forward.next = self.core.direction.val();
         self.line_tap.shift.next = self.shift.val();
         self.line_tap.counts_per_rev.next = self.counts_per_rev.val();
-        self.gatherer.reset.next = self.ident_reset.val();
+        self.gatherer.reset.next = self.ecc_reset.val();
         self.gatherer.arm.next = self.arm_now.val();
         self.gatherer.index.next = self.core.index.val();
         self.gatherer.line.next = self.line_tap.line.val();

@@ -5,4 +5,5 @@ pub mod core;
 pub mod ecc_top;
 pub mod ecc_wb_top;
 pub mod fault_flags;
+pub mod mode_reset;
 pub mod wb_top;

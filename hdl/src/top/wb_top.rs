@@ -27,7 +27,8 @@
 //! and none from an input to an output. An access takes two cycles (request edge, ack
 //! cycle); a configuration write acts in the core from the edge after the ack cycle's
 //! start (one edge after the write edge); a read returns the core's outputs as they stood
-//! in the request cycle. A change of `CTRL.MODE` resets the core at the edge that sees it.
+//! in the request cycle. A change of `CTRL.MODE` resets the core at the edge after the one
+//! that sees it (the core registers its configuration inputs once; docs/ports.md).
 
 use crate::bus::wb_regs::WbRegs;
 use crate::top::core::EncspeedCore;
