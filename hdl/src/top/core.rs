@@ -9,7 +9,8 @@
 //! enc_z ─ TwoFlopSync ─ GlitchFilter ────────────────────────┘ (z)
 //!                          step, forward ─┬─ Timebase + SyncEstimator ─ nep, ndt ─ SpeedCalc ─ SpeedHold ─ speed_n1..n3
 //!                                         └─ PcCounter, EtTimer, MtCounter ─ BaselineSpeeds ─ speed_pc, speed_et, speed_mt
-//! Startup (holds decoder and position counter through the filter delay), FaultFlags.
+//! ModeReset (registered cfg_mode and the reset its change causes), Startup (holds decoder
+//! and position counter through the filter delay), FaultFlags.
 //! ```
 //!
 //! The port table, widths and latencies are in docs/architecture.md and in the generated
@@ -352,8 +353,9 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
 
         // Configuration, registered once here: the blocks read registers (the glitch filters
         // compare cfg_filter into a register an edge ahead), so an input reaches at most one
-        // carry chain before a register (docs/ports.md gives when a change acts). A change of cfg_mode resets the core
-        // as `reset` does, at the edge after the one that sees it, with the new mode in place.
+        // carry chain before a register (docs/ports.md gives when a change acts). A change of
+        // cfg_mode resets the core as `reset` does, at the edge after the one that sees it,
+        // with the new mode in place (ModeReset).
         self.mode_reset.reset.next = self.reset.val();
         self.mode_reset.cfg_mode.next = self.cfg_mode.val();
         self.rst.next = self.mode_reset.rst.val();
