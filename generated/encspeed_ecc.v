@@ -661,6 +661,7 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
     reg  [1:0] decoder$cfg_mode;
     wire  decoder$step;
     wire  decoder$forward;
+    wire  decoder$first;
     wire  decoder$direction;
     wire  decoder$illegal;
     wire  decoder$illegal_seen;
@@ -807,9 +808,6 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
     wire  faults$fault_overspeed;
     wire  faults$fault_revolution;
     wire  [15:0] faults$glitch_count;
-    reg  have_dir$d;
-    wire  have_dir$q;
-    reg  have_dir$clock;
     reg  last_dir$d;
     wire  last_dir$q;
     reg  last_dir$clock;
@@ -910,6 +908,7 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         .cfg_mode(decoder$cfg_mode),
         .step(decoder$step),
         .forward(decoder$forward),
+        .first(decoder$first),
         .direction(decoder$direction),
         .illegal(decoder$illegal),
         .illegal_seen(decoder$illegal_seen),
@@ -1091,11 +1090,6 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         .fault_revolution(faults$fault_revolution),
         .glitch_count(faults$glitch_count)
     );
-    encspeed_ecc$core$have_dir have_dir(
-        .d(have_dir$d),
-        .q(have_dir$q),
-        .clock(have_dir$clock)
-    );
     encspeed_ecc$core$last_dir last_dir(
         .d(last_dir$d),
         .q(last_dir$q),
@@ -1161,7 +1155,6 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         baseline$clock = clock;
         faults$clock = clock;
         mode_reset$clock = clock;
-        have_dir$clock = clock;
         last_dir$clock = clock;
         et_have$clock = clock;
         dt_reg$clock = clock;
@@ -1175,7 +1168,6 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         window_last$clock = clock;
         restart_pos$clock = clock;
         position_before$clock = clock;
-        have_dir$d = have_dir$q;
         last_dir$d = last_dir$q;
         et_have$d = et_have$q;
         dt_reg$d = dt_reg$q;
@@ -1249,15 +1241,13 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         counter$limit = limit;
         counter$limit_less_one = limit_less_one;
         counter$cfg_z_mode = z_mode_reg$q;
-        first_step = decoder$step & (~have_dir$q | (decoder$forward ^ last_dir$q));
+        first_step = decoder$first;
         engine_reset = rst | first_step;
         step_counted = decoder$step & ~rst;
         if (decoder$step) begin
-            have_dir$d = 1'b1;
             last_dir$d = decoder$forward;
         end
         if (rst) begin
-            have_dir$d = 1'b0;
             last_dir$d = 1'b0;
         end
         timebase$reset = engine_reset;
@@ -1409,6 +1399,7 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
     localparam  s_one = 41'h1;
     localparam  s_msb = 41'h10000000000;
     localparam  s_max = 41'hffffffffff;
+    localparam  s_low_bits = 41'hffffffffff;
     localparam  sh_one = 8'h1;
     localparam  sh_two = 8'h2;
     localparam  mode_zero = 2'b0;
@@ -1508,6 +1499,9 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
     reg  [40:0] dq$d;
     wire  [40:0] dq$q;
     reg  dq$clock;
+    reg  upper_all_ones$d;
+    wire  upper_all_ones$q;
+    reg  upper_all_ones$clock;
     reg  [40:0] stage_et$d;
     wire  [40:0] stage_et$q;
     reg  stage_et$clock;
@@ -1531,6 +1525,15 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
     reg  [23:0] div$den;
     wire  [23:0] div$next_rem;
     wire  div$fits;
+    reg  sel_neg$d;
+    wire  sel_neg$q;
+    reg  sel_neg$clock;
+    reg  sel_zero$d;
+    wire  sel_zero$q;
+    reg  sel_zero$clock;
+    reg  sel_sat$d;
+    wire  sel_sat$q;
+    reg  sel_sat$clock;
     reg  round_add$clock;
     reg  [40:0] round_add$a;
     reg  [40:0] round_add$b;
@@ -1546,6 +1549,7 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
     reg  src_sh2;
     reg  [40:0] load_dq;
     reg  [23:0] load_rem;
+    reg  [23:0] sat_rem;
     reg  mul_q0;
     reg  [23:0] mul_sum;
     reg  mul_a_msb;
@@ -1554,9 +1558,6 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
     reg  mul_carry;
     reg  fits;
     reg  [23:0] next_rem;
-    reg  sel_neg;
-    reg  sel_zero;
-    reg  sel_sat;
     reg  [40:0] half;
     reg  round_bit;
     reg  [40:0] addend;
@@ -1704,6 +1705,11 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
         .q(dq$q),
         .clock(dq$clock)
     );
+    encspeed_ecc$core$baseline$upper_all_ones upper_all_ones(
+        .d(upper_all_ones$d),
+        .q(upper_all_ones$q),
+        .clock(upper_all_ones$clock)
+    );
     encspeed_ecc$core$baseline$stage_et stage_et(
         .d(stage_et$d),
         .q(stage_et$q),
@@ -1740,6 +1746,21 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
         .den(div$den),
         .next_rem(div$next_rem),
         .fits(div$fits)
+    );
+    encspeed_ecc$core$baseline$sel_neg sel_neg(
+        .d(sel_neg$d),
+        .q(sel_neg$q),
+        .clock(sel_neg$clock)
+    );
+    encspeed_ecc$core$baseline$sel_zero sel_zero(
+        .d(sel_zero$d),
+        .q(sel_zero$q),
+        .clock(sel_zero$clock)
+    );
+    encspeed_ecc$core$baseline$sel_sat sel_sat(
+        .d(sel_sat$d),
+        .q(sel_sat$q),
+        .clock(sel_sat$clock)
     );
     encspeed_ecc$core$baseline$round_add round_add(
         .clock(round_add$clock),
@@ -1779,12 +1800,16 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
         part_rem$clock = clock;
         den$clock = clock;
         dq$clock = clock;
+        upper_all_ones$clock = clock;
         stage_et$clock = clock;
         et_rounding$clock = clock;
         out_pc$clock = clock;
         out_et$clock = clock;
         out_mt$clock = clock;
         valid_reg$clock = clock;
+        sel_neg$clock = clock;
+        sel_zero$clock = clock;
+        sel_sat$clock = clock;
         req_pc$d = req_pc$q;
         req_period$d = req_period$q;
         req_et_neg$d = req_et_neg$q;
@@ -1813,12 +1838,16 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
         part_rem$d = part_rem$q;
         den$d = den$q;
         dq$d = dq$q;
+        upper_all_ones$d = upper_all_ones$q;
         stage_et$d = stage_et$q;
         et_rounding$d = et_rounding$q;
         out_pc$d = out_pc$q;
         out_et$d = out_et$q;
         out_mt$d = out_mt$q;
         valid_reg$d = valid_reg$q;
+        sel_neg$d = sel_neg$q;
+        sel_zero$d = sel_zero$q;
+        sel_sat$d = sel_sat$q;
         take = (state$q == st_idle) & pending$q;
         dt_eff = req_dt$q;
         if (req_dt$q == n_zero) begin
@@ -1998,6 +2027,14 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
                 load_dq = load_dq >> sh_one;
             end
         end
+        sat_rem = mul_a$q;
+        if (w_sh1$q) begin
+            sat_rem = mul_a$q >> sh_one;
+        end
+        if (w_sh2$q) begin
+            sat_rem = mul_a$q >> sh_two;
+        end
+        w_mt_sat$d = sat_rem >= w_t$q;
         mul_a_msb = (mul_a$q & n_msb) != n_zero;
         mul_md_msb = (mul_md$q & n_msb) != n_zero;
         mul_q0 = (mul_q$q & n_one) != n_zero;
@@ -2012,32 +2049,33 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
         div$den = den$q;
         fits = div$fits;
         next_rem = div$next_rem;
-        sel_neg = w_et_neg$q;
-        sel_zero = w_et_zero$q;
-        sel_sat = 1'b0;
+        sel_neg$d = w_et_neg$q;
+        sel_zero$d = w_et_zero$q;
+        sel_sat$d = 1'b0;
         if (phase$q) begin
-            sel_neg = w_mt_neg$q;
-            sel_zero = w_mt_zero$q;
-            sel_sat = w_mt_sat$q;
+            sel_neg$d = w_mt_neg$q;
+            sel_zero$d = w_mt_zero$q;
+            sel_sat$d = w_mt_sat$q;
         end
         half = dq$q >> sh_one;
-        round_bit = ((dq$q & s_one) != s_zero) & (~&dq$q);
-        if (sel_sat) begin
+        upper_all_ones$d = (dq$q & s_low_bits) == s_low_bits;
+        round_bit = ((dq$q & s_one) != s_zero) & ~upper_all_ones$q;
+        if (sel_sat$q) begin
             half = s_max;
             round_bit = 1'b0;
         end
-        if (sel_zero) begin
+        if (sel_zero$q) begin
             half = s_zero;
             round_bit = 1'b0;
         end
         addend = half;
-        if (sel_neg) begin
+        if (sel_neg$q) begin
             addend = ~half;
         end
         round_add$clock = clock;
         round_add$a = addend;
         round_add$b = s_zero;
-        round_add$carry_in = round_bit ^ sel_neg;
+        round_add$carry_in = round_bit ^ sel_neg$q;
         pc_sign = (w_pc$q & n_msb) != n_zero;
         pc_speed = s_zero;
         if (w_pc$q[0]) begin
@@ -2235,7 +2273,6 @@ module encspeed_ecc$core$baseline(clock,reset,start,pc_count,et_period,et_negati
         end
         if (state$q == st_setup) begin
             den$d = w_t$q;
-            w_mt_sat$d = load_rem >= w_t$q;
             phase$d = 1'b1;
         end
         if (state$q == st_step) begin
@@ -2904,6 +2941,63 @@ module encspeed_ecc$core$baseline$round_add$low(d,q,clock);
 endmodule // encspeed_ecc$core$baseline$round_add$low
 
 
+module encspeed_ecc$core$baseline$sel_neg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$baseline$sel_neg
+
+
+module encspeed_ecc$core$baseline$sel_sat(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$baseline$sel_sat
+
+
+module encspeed_ecc$core$baseline$sel_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$baseline$sel_zero
+
+
 module encspeed_ecc$core$baseline$stage_et(d,q,clock);
     
     // Module arguments
@@ -2940,6 +3034,25 @@ module encspeed_ecc$core$baseline$state(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$baseline$state
+
+
+module encspeed_ecc$core$baseline$upper_all_ones(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$baseline$upper_all_ones
 
 
 module encspeed_ecc$core$baseline$valid_reg(d,q,clock);
@@ -5222,6 +5335,9 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
     localparam  pos_zero = 32'h0;
     localparam  pos_one = 32'h1;
     localparam  pos_max = 32'hffffffff;
+    localparam  low_mask = 32'hffff;
+    localparam  low_max_less_one = 32'hfffe;
+    localparam  low_width = 8'h10;
     localparam  mode_ignore = 2'b0;
     localparam  mode_reset = 2'b1;
     localparam  mode_latch = 2'b10;
@@ -5240,6 +5356,12 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
     reg  at_limit$d;
     wire  at_limit$q;
     reg  at_limit$clock;
+    reg  low_all_ones$d;
+    wire  low_all_ones$q;
+    reg  low_all_ones$clock;
+    reg  low_not_zero$d;
+    wire  low_not_zero$q;
+    reg  low_not_zero$clock;
     reg  [31:0] latch_reg$d;
     wire  [31:0] latch_reg$q;
     reg  latch_reg$clock;
@@ -5285,6 +5407,14 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
     reg  [31:0] stepped;
     reg  stepped_not_zero;
     reg  stepped_at_limit;
+    reg  stepped_low_all_ones;
+    reg  stepped_low_not_zero;
+    reg  [31:0] plus_one;
+    reg  [31:0] minus_one;
+    reg  [31:0] low;
+    reg  [31:0] high;
+    reg  limit_low_all_ones;
+    reg  limit_low_zero;
     reg  single;
     reg  rise;
     reg  any_now;
@@ -5309,6 +5439,16 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
         .d(at_limit$d),
         .q(at_limit$q),
         .clock(at_limit$clock)
+    );
+    encspeed_ecc$core$counter$low_all_ones low_all_ones(
+        .d(low_all_ones$d),
+        .q(low_all_ones$q),
+        .clock(low_all_ones$clock)
+    );
+    encspeed_ecc$core$counter$low_not_zero low_not_zero(
+        .d(low_not_zero$d),
+        .q(low_not_zero$q),
+        .clock(low_not_zero$clock)
     );
     encspeed_ecc$core$counter$latch_reg latch_reg(
         .d(latch_reg$d),
@@ -5381,6 +5521,8 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
         position_reg$clock = clock;
         not_zero$clock = clock;
         at_limit$clock = clock;
+        low_all_ones$clock = clock;
+        low_not_zero$clock = clock;
         latch_reg$clock = clock;
         index_reg$clock = clock;
         z_delay$clock = clock;
@@ -5397,6 +5539,8 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
         position_reg$d = position_reg$q;
         not_zero$d = not_zero$q;
         at_limit$d = at_limit$q;
+        low_all_ones$d = low_all_ones$q;
+        low_not_zero$d = low_not_zero$q;
         latch_reg$d = latch_reg$q;
         index_reg$d = index_reg$q;
         z_delay$d = z_delay$q;
@@ -5414,19 +5558,37 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
         z_delay$d = z;
         z_prev$d = z_delay$q;
         single = limit == pos_zero;
+        low = position_reg$q & low_mask;
+        high = position_reg$q >> low_width;
+        plus_one = ((low + pos_one) & low_mask) | (high << low_width);
+        if (low_all_ones$q) begin
+            plus_one = (high + pos_one) << low_width;
+        end
+        minus_one = ((low - pos_one) & low_mask) | (high << low_width);
+        if (~low_not_zero$q) begin
+            minus_one = ((high - pos_one) << low_width) | low_mask;
+        end
+        limit_low_all_ones = (limit & low_mask) == low_mask;
+        limit_low_zero = (limit & low_mask) == pos_zero;
         stepped = position_reg$q;
         stepped_not_zero = not_zero$q;
         stepped_at_limit = at_limit$q;
+        stepped_low_all_ones = low_all_ones$q;
+        stepped_low_not_zero = low_not_zero$q;
         if (step & forward) begin
             if (at_limit$q) begin
                 stepped = pos_zero;
                 stepped_not_zero = 1'b0;
                 stepped_at_limit = single;
+                stepped_low_all_ones = 1'b0;
+                stepped_low_not_zero = 1'b0;
             end
             else begin
-                stepped = position_reg$q + pos_one;
+                stepped = plus_one;
                 stepped_not_zero = 1'b1;
                 stepped_at_limit = position_reg$q == limit_less_one;
+                stepped_low_all_ones = low == low_max_less_one;
+                stepped_low_not_zero = ~low_all_ones$q;
             end
         end
         if (step & ~forward) begin
@@ -5434,11 +5596,15 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
                 stepped = limit;
                 stepped_not_zero = ~single;
                 stepped_at_limit = 1'b1;
+                stepped_low_all_ones = limit_low_all_ones;
+                stepped_low_not_zero = ~limit_low_zero;
             end
             else begin
-                stepped = position_reg$q - pos_one;
+                stepped = minus_one;
                 stepped_not_zero = position_reg$q != pos_one;
                 stepped_at_limit = 1'b0;
+                stepped_low_all_ones = ~low_not_zero$q;
+                stepped_low_not_zero = low != pos_one;
             end
         end
         any_now = rev_any$q;
@@ -5481,6 +5647,8 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
         position_reg$d = stepped;
         not_zero$d = stepped_not_zero;
         at_limit$d = stepped_at_limit;
+        low_all_ones$d = stepped_low_all_ones;
+        low_not_zero$d = stepped_low_not_zero;
         index_reg$d = rise;
         fault_reg$d = 1'b0;
         rev_any$d = any_now;
@@ -5496,6 +5664,8 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
                 position_reg$d = pos_zero;
                 not_zero$d = 1'b0;
                 at_limit$d = single;
+                low_all_ones$d = 1'b0;
+                low_not_zero$d = 1'b0;
             end
             if (bad) begin
                 error_reg$d = 1'b1;
@@ -5514,6 +5684,8 @@ module encspeed_ecc$core$counter(clock,reset,step,forward,z,limit,limit_less_one
             position_reg$d = pos_zero;
             not_zero$d = 1'b0;
             at_limit$d = single;
+            low_all_ones$d = 1'b0;
+            low_not_zero$d = 1'b0;
             latch_reg$d = pos_zero;
             index_reg$d = 1'b0;
             z_delay$d = 1'b1;
@@ -5670,6 +5842,44 @@ module encspeed_ecc$core$counter$latch_reg(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$counter$latch_reg
+
+
+module encspeed_ecc$core$counter$low_all_ones(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$counter$low_all_ones
+
+
+module encspeed_ecc$core$counter$low_not_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$counter$low_not_zero
 
 
 module encspeed_ecc$core$counter$not_zero(d,q,clock);
@@ -5843,7 +6053,7 @@ module encspeed_ecc$core$counter$z_prev(d,q,clock);
 endmodule // encspeed_ecc$core$counter$z_prev
 
 
-module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction,illegal,illegal_seen,illegal_count,mode_error);
+module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,first,direction,illegal,illegal_seen,illegal_count,mode_error);
     
     // Module arguments
     input wire  clock;
@@ -5853,6 +6063,7 @@ module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction
     input wire  [1:0] cfg_mode;
     output reg  step;
     output reg  forward;
+    output reg  first;
     output reg  direction;
     output reg  illegal;
     output reg  illegal_seen;
@@ -5886,6 +6097,12 @@ module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction
     reg  direction_reg$d;
     wire  direction_reg$q;
     reg  direction_reg$clock;
+    reg  have_step$d;
+    wire  have_step$q;
+    reg  have_step$clock;
+    reg  first_reg$d;
+    wire  first_reg$q;
+    reg  first_reg$clock;
     reg  illegal_reg$d;
     wire  illegal_reg$q;
     reg  illegal_reg$clock;
@@ -5935,6 +6152,16 @@ module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction
         .q(direction_reg$q),
         .clock(direction_reg$clock)
     );
+    encspeed_ecc$core$decoder$have_step have_step(
+        .d(have_step$d),
+        .q(have_step$q),
+        .clock(have_step$clock)
+    );
+    encspeed_ecc$core$decoder$first_reg first_reg(
+        .d(first_reg$d),
+        .q(first_reg$q),
+        .clock(first_reg$clock)
+    );
     encspeed_ecc$core$decoder$illegal_reg illegal_reg(
         .d(illegal_reg$d),
         .q(illegal_reg$q),
@@ -5959,6 +6186,8 @@ module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction
         step_reg$clock = clock;
         forward_reg$clock = clock;
         direction_reg$clock = clock;
+        have_step$clock = clock;
+        first_reg$clock = clock;
         illegal_reg$clock = clock;
         seen_reg$clock = clock;
         count_reg$clock = clock;
@@ -5968,6 +6197,8 @@ module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction
         step_reg$d = step_reg$q;
         forward_reg$d = forward_reg$q;
         direction_reg$d = direction_reg$q;
+        have_step$d = have_step$q;
+        first_reg$d = first_reg$q;
         illegal_reg$d = illegal_reg$q;
         seen_reg$d = seen_reg$q;
         count_reg$d = count_reg$q;
@@ -5988,8 +6219,10 @@ module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction
         primed$d = 1'b1;
         step_reg$d = step_now;
         forward_reg$d = step_now & forward_now;
+        first_reg$d = step_now & (~have_step$q | (forward_now ^ direction_reg$q));
         if (step_now) begin
             direction_reg$d = forward_now;
+            have_step$d = 1'b1;
         end
         illegal_reg$d = illegal_now;
         if (illegal_now) begin
@@ -6005,12 +6238,15 @@ module encspeed_ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,direction
             step_reg$d = 1'b0;
             forward_reg$d = 1'b0;
             direction_reg$d = 1'b0;
+            have_step$d = 1'b0;
+            first_reg$d = 1'b0;
             illegal_reg$d = 1'b0;
             seen_reg$d = 1'b0;
             count_reg$d = count_zero;
         end
         step = step_reg$q;
         forward = forward_reg$q;
+        first = first_reg$q;
         direction = direction_reg$q;
         illegal = illegal_reg$q;
         illegal_seen = seen_reg$q;
@@ -6097,6 +6333,25 @@ module encspeed_ecc$core$decoder$direction_reg(d,q,clock);
 endmodule // encspeed_ecc$core$decoder$direction_reg
 
 
+module encspeed_ecc$core$decoder$first_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$decoder$first_reg
+
+
 module encspeed_ecc$core$decoder$forward_reg(d,q,clock);
     
     // Module arguments
@@ -6114,6 +6369,25 @@ module encspeed_ecc$core$decoder$forward_reg(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$decoder$forward_reg
+
+
+module encspeed_ecc$core$decoder$have_step(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$decoder$have_step
 
 
 module encspeed_ecc$core$decoder$illegal_reg(d,q,clock);
@@ -7332,25 +7606,6 @@ module encspeed_ecc$core$filter_z$rejected_reg(d,q,clock);
 endmodule // encspeed_ecc$core$filter_z$rejected_reg
 
 
-module encspeed_ecc$core$have_dir(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_ecc$core$have_dir
-
-
 module encspeed_ecc$core$hold(clock,clear,load,n1_in,n2_in,n3_in,n1,n2,n3,strobe,have_speed);
     
     // Module arguments
@@ -7681,6 +7936,9 @@ module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,
     reg  [23:0] m_count$d;
     wire  [23:0] m_count$q;
     reg  m_count$clock;
+    reg  m_nonzero$d;
+    wire  m_nonzero$q;
+    reg  m_nonzero$clock;
     reg  [23:0] age$d;
     wire  [23:0] age$q;
     reg  age$clock;
@@ -7742,6 +8000,11 @@ module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,
         .q(m_count$q),
         .clock(m_count$clock)
     );
+    encspeed_ecc$core$mt$m_nonzero m_nonzero(
+        .d(m_nonzero$d),
+        .q(m_nonzero$q),
+        .clock(m_nonzero$clock)
+    );
     encspeed_ecc$core$mt$age age(
         .d(age$d),
         .q(age$q),
@@ -7784,6 +8047,7 @@ module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,
         have_dir$clock = clock;
         dir$clock = clock;
         m_count$clock = clock;
+        m_nonzero$clock = clock;
         age$clock = clock;
         span$clock = clock;
         last$clock = clock;
@@ -7795,6 +8059,7 @@ module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,
         have_dir$d = have_dir$q;
         dir$d = dir$q;
         m_count$d = m_count$q;
+        m_nonzero$d = m_nonzero$q;
         age$d = age$q;
         span$d = span$q;
         last$d = last$q;
@@ -7828,9 +8093,10 @@ module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,
             span_now = age_inc;
             last_now = zero;
         end
-        m_now_nonzero = (m_count$q != zero) | cont;
+        m_now_nonzero = m_nonzero$q | cont;
         strobe_reg$d = tick & anchored$q;
         m_count$d = m_now;
+        m_nonzero$d = m_now_nonzero;
         span$d = span_now;
         age$d = age_inc;
         if (tick) begin
@@ -7843,6 +8109,7 @@ module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,
                 neg_reg$d = ~dir$q;
             end
             m_count$d = zero;
+            m_nonzero$d = 1'b0;
             span$d = zero;
             if (m_now_nonzero) begin
                 anchored$d = 1'b1;
@@ -7853,6 +8120,7 @@ module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,
         if (rev) begin
             anchored$d = 1'b1;
             m_count$d = zero;
+            m_nonzero$d = 1'b0;
             age$d = zero;
             span$d = zero;
             last$d = zero;
@@ -7866,6 +8134,7 @@ module encspeed_ecc$core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,
             have_dir$d = 1'b0;
             dir$d = 1'b0;
             m_count$d = zero;
+            m_nonzero$d = 1'b0;
             age$d = zero;
             span$d = zero;
             last$d = zero;
@@ -7996,6 +8265,25 @@ module encspeed_ecc$core$mt$m_count(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$mt$m_count
+
+
+module encspeed_ecc$core$mt$m_nonzero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$mt$m_nonzero
 
 
 module encspeed_ecc$core$mt$m_reg(d,q,clock);
@@ -9782,6 +10070,9 @@ module encspeed_ecc$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,st
     reg  [23:0] cdt_count$d;
     wire  [23:0] cdt_count$q;
     reg  cdt_count$clock;
+    reg  cdt_nonzero$d;
+    wire  cdt_nonzero$q;
+    reg  cdt_nonzero$clock;
     reg  due$d;
     wire  due$q;
     reg  due$clock;
@@ -9789,7 +10080,7 @@ module encspeed_ecc$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,st
     // Local signals
     reg  restart_now;
     reg  tick_now;
-    reg  [23:0] cdt_after_pulse;
+    reg  [23:0] cdt_plus_one;
     
     // Sub module instances
     encspeed_ecc$core$timebase$ts_plus_two ts_plus_two(
@@ -9802,6 +10093,11 @@ module encspeed_ecc$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,st
         .q(cdt_count$q),
         .clock(cdt_count$clock)
     );
+    encspeed_ecc$core$timebase$cdt_nonzero cdt_nonzero(
+        .d(cdt_nonzero$d),
+        .q(cdt_nonzero$q),
+        .clock(cdt_nonzero$clock)
+    );
     encspeed_ecc$core$timebase$due due(
         .d(due$d),
         .q(due$q),
@@ -9812,11 +10108,13 @@ module encspeed_ecc$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,st
     always @(*) begin
         ts_plus_two$clock = clock;
         cdt_count$clock = clock;
+        cdt_nonzero$clock = clock;
         due$clock = clock;
         ts_plus_two$d = ts_plus_two$q;
         cdt_count$d = cdt_count$q;
+        cdt_nonzero$d = cdt_nonzero$q;
         due$d = due$q;
-        restart_now = lep & (cdt_count$q != zero);
+        restart_now = lep & cdt_nonzero$q;
         tick_now = ~restart_now & due$q;
         ts_plus_two$d = ts_plus_two$q + one;
         due$d = ts_plus_two$q >= dt;
@@ -9824,18 +10122,24 @@ module encspeed_ecc$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,st
             ts_plus_two$d = two;
             due$d = 1'b0;
         end
-        cdt_after_pulse = cdt_count$q;
-        if (lep) begin
-            cdt_after_pulse = zero;
+        cdt_plus_one = cdt_count$q + one;
+        cdt_count$d = cdt_count$q;
+        if (tick_now & (cdt_count$q != saturated)) begin
+            cdt_count$d = cdt_plus_one;
         end
-        cdt_count$d = cdt_after_pulse;
-        if (tick_now & (cdt_after_pulse != saturated)) begin
-            cdt_count$d = cdt_after_pulse + one;
+        cdt_nonzero$d = cdt_nonzero$q | tick_now;
+        if (lep) begin
+            cdt_count$d = zero;
+            if (tick_now) begin
+                cdt_count$d = one;
+            end
+            cdt_nonzero$d = tick_now;
         end
         if (reset) begin
             ts_plus_two$d = two;
             due$d = 1'b0;
             cdt_count$d = zero;
+            cdt_nonzero$d = 1'b0;
         end
         tick = tick_now;
         restart = restart_now;
@@ -9863,6 +10167,25 @@ module encspeed_ecc$core$timebase$cdt_count(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$timebase$cdt_count
+
+
+module encspeed_ecc$core$timebase$cdt_nonzero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$timebase$cdt_nonzero
 
 
 module encspeed_ecc$core$timebase$due(d,q,clock);

@@ -228,6 +228,7 @@ fn illegal_jump_is_flagged_and_not_counted() {
     let want = DecoderOutputs {
         step: false,
         forward: false,
+        first: false,
         direction: false,
         illegal: true,
         illegal_seen: true,
@@ -247,6 +248,64 @@ fn illegal_jump_is_flagged_and_not_counted() {
     assert_eq!(o.illegal_count, 3);
     let o = run(true, true, false);
     assert!(!o.illegal_seen && o.illegal_count == 0 && !o.direction);
+}
+
+#[test]
+fn first_marks_the_first_step_and_each_reversal_by_hand() {
+    // x4 from 00: forward 00→10→11, back 11→10→00, forward 00→10, then a hold. By hand,
+    // `first` is set on the first step (no direction yet) and on each step against the
+    // last one: steps F F B B F → first 1 0 1 0 1; the hold makes no step and no `first`.
+    let mut d = QuadratureDecoder::new(2);
+    let levels = [
+        (0, 0),
+        (0, 0),
+        (1, 0),
+        (1, 1),
+        (1, 0),
+        (0, 0),
+        (1, 0),
+        (1, 0),
+    ];
+    let got: Vec<(bool, bool, bool)> = levels
+        .iter()
+        .enumerate()
+        .map(|(k, &(a, b))| {
+            let o = d.step(DecoderInputs {
+                reset: k == 0,
+                a: a == 1,
+                b: b == 1,
+                cfg_mode: MODE_X4,
+            });
+            (o.step, o.forward, o.first)
+        })
+        .skip(2)
+        .collect();
+    let want = [
+        (true, true, true),
+        (true, true, false),
+        (true, false, true),
+        (true, false, false),
+        (true, true, true),
+        (false, false, false),
+    ];
+    assert_eq!(got, want);
+    // A reset forgets the direction: the next step is a first step again.
+    d.step(DecoderInputs {
+        reset: true,
+        a: true,
+        b: false,
+        cfg_mode: MODE_X4,
+    });
+    let mut o = DecoderOutputs::default();
+    for (a, b) in [(true, false), (true, true)] {
+        o = d.step(DecoderInputs {
+            reset: false,
+            a,
+            b,
+            cfg_mode: MODE_X4,
+        });
+    }
+    assert!(o.step && o.forward && o.first);
 }
 
 #[test]

@@ -26,6 +26,9 @@ pub struct DecoderOutputs {
     pub step: bool,
     /// One cycle, with `step`: the step is forward (low whenever `step` is low).
     pub forward: bool,
+    /// One cycle, with `step`: the first step since reset, or a step against the direction
+    /// of the last one (a reversal); low whenever `step` is low.
+    pub first: bool,
     /// Direction of the last step (high = forward; low after reset).
     pub direction: bool,
     /// One cycle: both channels changed between two samples (no step is made).
@@ -51,8 +54,12 @@ pub struct DecoderState {
     pub step: bool,
     /// `forward` register.
     pub forward: bool,
+    /// `first` register.
+    pub first: bool,
     /// `direction` register.
     pub direction: bool,
+    /// A step since reset (`direction` holds a real direction).
+    pub have_step: bool,
     /// `illegal` register.
     pub illegal: bool,
     /// `illegal_seen` register.
@@ -120,7 +127,9 @@ impl QuadratureDecoder {
                 primed: true,
                 step,
                 forward: step && fwd,
+                first: step && (!s.have_step || fwd != s.direction),
                 direction: if step { fwd } else { s.direction },
+                have_step: s.have_step || step,
                 illegal,
                 illegal_seen: s.illegal_seen || illegal,
                 illegal_count: if illegal {
@@ -134,6 +143,7 @@ impl QuadratureDecoder {
         DecoderOutputs {
             step: n.step,
             forward: n.forward,
+            first: n.first,
             direction: n.direction,
             illegal: n.illegal,
             illegal_seen: n.illegal_seen,

@@ -73,7 +73,9 @@
 //!   by one; after N steps {A, Q} = m·dt. No N×N multiplier (iCE40 has no DSP).
 //! * **SETUP**: the ET quotient goes into the round-and-sign adder, whose sum the first M/T
 //!   step writes into a staging register; the divider is set up for M/T: X = {A, Q},
-//!   den = t, and the saturation flag is A >> s ≥ t.
+//!   den = t. The saturation flag A >> s ≥ t is registered at every edge from the working
+//!   registers, which hold the product from the last multiplier step on, so FINISH reads
+//!   the flag of this product.
 //! * **STEP ×S, M/T**, then **FINISH** puts the M/T quotient into the round-and-sign adder,
 //!   and **OUTPUT** writes `speed_pc` (the working copy of `pc_count` shifted), `speed_et`
 //!   (staged) and `speed_mt` (the adder's sum) together with `valid`.
@@ -85,8 +87,10 @@
 //! the top of `dq` into 2R + b and one quotient bit into its bottom, so after S steps `dq`
 //! holds q = ⌊X·2^(F+1−s)/den⌋ (S bits, since R < den) without ever forming X·2^F. The
 //! trial 2R + b needs N + 1 bits: its top bit is R's, and 2R + b ≥ den is read off the
-//! borrow of one N-bit subtraction: the step is [`DivStep`](crate::arith::div_step::DivStep). The magnitude is (q + 1) >> 1; q all ones (which would
-//! round up past the format) and a preload not below den saturate to 2^(N+F) − 1. Rounding
+//! borrow of one N-bit subtraction: the step is [`DivStep`](crate::arith::div_step::DivStep).
+//! The magnitude is (q + 1) >> 1; q all ones (which would round up past the format; its
+//! bits above bit 0 are tested on `dq` one edge earlier, a register) and a preload not below den
+//! saturate to 2^(N+F) − 1. Rounding
 //! and sign share one adder: with h = q >> 1 and r = q & 1, the result is (h, or ~h if
 //! negative) + (r xor negative), as in [`SpeedCalc`](crate::SpeedCalc).
 //!
@@ -99,13 +103,13 @@
 //!
 //! # Resources
 //!
-//! Registers: the request (5N + 6), working copies and flags (2N + 7), the multiplier (3N),
+//! Registers: the request (5N + 6), working copies and flags (2N + 11), the multiplier (3N),
 //! the divider (2N + S), staging and outputs (4S + 1), the round adder's low sum and high
 //! operand (about S + 3), a 6-bit step counter and 4 control bits. Adders: the divider's
 //! N-bit trial subtraction, the multiplier's N-bit add, the S-bit round-and-sign adder in
 //! two halves, the N-bit saturation comparison. yosys 0.23 `synth_ice40 -top
 //! 'encspeed_core$baseline'; stat` on generated/encspeed_core.v (the block at N = 24,
-//! F = 16, S = 41) maps it to 545 flip-flops (constant bits removed), 633 LUT4 and 119
+//! F = 16, S = 41) maps it to 549 flip-flops (constant bits removed), 636 LUT4 and 119
 //! carry cells; 501, 677 and 118 with the round-and-sign adder in one cycle. (SpeedCalc,
 //! three divisions of 2N + 1 bits: 604, 792 and 277.)
 
@@ -189,7 +193,9 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     w_mt_neg: DFF<Bit>,
     /// `speed_mt` = 0.
     w_mt_zero: DFF<Bit>,
-    /// `speed_mt` saturates (preload not below t).
+    /// `speed_mt` saturates (preload not below t). Registered at every edge from the
+    /// product and t, which are steady from the last multiplier step to FINISH, where it is
+    /// read: no state decode or set-up mux in front of its comparison.
     w_mt_sat: DFF<Bit>,
     // Sequencer.
     state: DFF<Bits<STATE_BITS>>,
@@ -205,6 +211,11 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     den: DFF<Bits<N>>,
     /// Numerator bits out at the top, quotient bits in at the bottom.
     dq: DFF<Bits<S>>,
+    /// `dq`'s low S − 1 bits were all ones at the edge before: when SETUP or FINISH
+    /// rounds a quotient, its bits above bit 0 (registered from every `dq`, so that no
+    /// S-bit reduction, and nothing of the division step, lies in front of the round
+    /// adder's carry chain).
+    upper_all_ones: DFF<Bit>,
     // Results.
     stage_et: DFF<Bits<S>>,
     /// The round adder's sum is the ET result (the cycle after SETUP).
@@ -225,6 +236,8 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     src_sh2: Signal<Local, Bit>,
     load_dq: Signal<Local, Bits<S>>,
     load_rem: Signal<Local, Bits<N>>,
+    /// The M/T preload A >> s, from the working registers.
+    sat_rem: Signal<Local, Bits<N>>,
     // Multiplier step.
     /// Bit 0 of Q: add dt in this step.
     mul_q0: Signal<Local, Bit>,
@@ -239,9 +252,13 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     fits: Signal<Local, Bit>,
     next_rem: Signal<Local, Bits<N>>,
     // Round and sign.
-    sel_neg: Signal<Local, Bit>,
-    sel_zero: Signal<Local, Bit>,
-    sel_sat: Signal<Local, Bit>,
+    /// The sign, zero and saturation flags of the division being rounded, registered from
+    /// `phase` at every edge: `phase` and the flags are steady for many cycles before
+    /// SETUP and FINISH read them, and a register takes the selection out of the round
+    /// adder's input logic.
+    sel_neg: DFF<Bit>,
+    sel_zero: DFF<Bit>,
+    sel_sat: DFF<Bit>,
     /// Quotient >> 1 (or a special value).
     half: Signal<Local, Bits<S>>,
     /// Quotient bit 0: the rounding increment.
@@ -265,6 +282,8 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     s_msb: Constant<Bits<S>>,
     /// 2^(N+F) − 1: the saturated magnitude.
     s_max: Constant<Bits<S>>,
+    /// 2^(S−1) − 1: `dq`'s low S − 1 bits.
+    s_low_bits: Constant<Bits<S>>,
     sh_one: Constant<Bits<SHIFT_BITS>>,
     sh_two: Constant<Bits<SHIFT_BITS>>,
     mode_zero: Constant<Bits<2>>,
@@ -341,6 +360,7 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             part_rem: Default::default(),
             den: Default::default(),
             dq: Default::default(),
+            upper_all_ones: Default::default(),
             stage_et: Default::default(),
             et_rounding: Default::default(),
             out_pc: Default::default(),
@@ -355,6 +375,7 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             src_sh2: Default::default(),
             load_dq: Default::default(),
             load_rem: Default::default(),
+            sat_rem: Default::default(),
             mul_q0: Default::default(),
             mul_sum: Default::default(),
             mul_a_msb: Default::default(),
@@ -380,6 +401,7 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             s_one: Constant::new(1.into()),
             s_msb: Constant::new((1u64 << (S - 1)).into()),
             s_max: Constant::new(((1u64 << (N + F)) - 1).into()),
+            s_low_bits: Constant::new(((1u64 << (S - 1)) - 1).into()),
             sh_one: Constant::new(1.into()),
             sh_two: Constant::new(2.into()),
             mode_zero: Constant::new(0.into()),
@@ -431,12 +453,16 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             part_rem,
             den,
             dq,
+            upper_all_ones,
             stage_et,
             et_rounding,
             out_pc,
             out_et,
             out_mt,
-            valid_reg
+            valid_reg,
+            sel_neg,
+            sel_zero,
+            sel_sat
         );
         self.take.next = (self.state.q.val() == self.st_idle.val()) & self.pending.q.val();
         self.dt_eff.next = self.req_dt.q.val();
@@ -485,6 +511,16 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             }
         }
 
+        // The M/T saturation test, A >> s ≥ t: at FINISH it has the final product.
+        self.sat_rem.next = self.mul_a.q.val();
+        if self.w_sh1.q.val() {
+            self.sat_rem.next = self.mul_a.q.val() >> self.sh_one.val();
+        }
+        if self.w_sh2.q.val() {
+            self.sat_rem.next = self.mul_a.q.val() >> self.sh_two.val();
+        }
+        self.w_mt_sat.d.next = self.sat_rem.val() >= self.w_t.q.val();
+
         // Multiplier step: A + (Q bit 0 ? dt : 0) with its carry, from the top bits.
         self.mul_a_msb.next = (self.mul_a.q.val() & self.n_msb.val()) != self.n_zero.val();
         self.mul_md_msb.next = (self.mul_md.q.val() & self.n_msb.val()) != self.n_zero.val();
@@ -510,27 +546,30 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
         // is (h, or ~h if negative) + (r xor negative). q all ones would round past the
         // format: r is dropped (h is then the maximum). Saturation: h = max, r = 0; zero:
         // h = 0, r = 0.
-        self.sel_neg.next = self.w_et_neg.q.val();
-        self.sel_zero.next = self.w_et_zero.q.val();
-        self.sel_sat.next = false;
+        self.sel_neg.d.next = self.w_et_neg.q.val();
+        self.sel_zero.d.next = self.w_et_zero.q.val();
+        self.sel_sat.d.next = false;
         if self.phase.q.val() {
-            self.sel_neg.next = self.w_mt_neg.q.val();
-            self.sel_zero.next = self.w_mt_zero.q.val();
-            self.sel_sat.next = self.w_mt_sat.q.val();
+            self.sel_neg.d.next = self.w_mt_neg.q.val();
+            self.sel_zero.d.next = self.w_mt_zero.q.val();
+            self.sel_sat.d.next = self.w_mt_sat.q.val();
         }
         self.half.next = self.dq.q.val() >> self.sh_one.val();
-        self.round_bit.next =
-            ((self.dq.q.val() & self.s_one.val()) != self.s_zero.val()) & (!self.dq.q.val().all());
-        if self.sel_sat.val() {
+        // q all ones is bit 0 and the bits above it: r & ¬(all ones) = r & ¬(bits above).
+        self.upper_all_ones.d.next =
+            (self.dq.q.val() & self.s_low_bits.val()) == self.s_low_bits.val();
+        self.round_bit.next = ((self.dq.q.val() & self.s_one.val()) != self.s_zero.val())
+            & !self.upper_all_ones.q.val();
+        if self.sel_sat.q.val() {
             self.half.next = self.s_max.val();
             self.round_bit.next = false;
         }
-        if self.sel_zero.val() {
+        if self.sel_zero.q.val() {
             self.half.next = self.s_zero.val();
             self.round_bit.next = false;
         }
         self.addend.next = self.half.val();
-        if self.sel_neg.val() {
+        if self.sel_neg.q.val() {
             self.addend.next = !self.half.val();
         }
         // The sum is ready in the cycle after the operands (TwoCycleAdder): the ET result
@@ -538,7 +577,7 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
         self.round_add.clock.next = self.clock.val();
         self.round_add.a.next = self.addend.val();
         self.round_add.b.next = self.s_zero.val();
-        self.round_add.carry_in.next = self.round_bit.val() ^ self.sel_neg.val();
+        self.round_add.carry_in.next = self.round_bit.val() ^ self.sel_neg.q.val();
 
         // PC: pc_count at the top of S bits is pc·2^(F+1); 1 + s arithmetic right shifts.
         self.pc_sign.next = (self.w_pc.q.val() & self.n_msb.val()) != self.n_zero.val();
@@ -602,7 +641,6 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
         }
         if self.state.q.val() == self.st_setup.val() {
             self.den.d.next = self.w_t.q.val();
-            self.w_mt_sat.d.next = self.load_rem.val() >= self.w_t.q.val();
             self.phase.d.next = true;
         }
         if self.state.q.val() == self.st_step.val() {

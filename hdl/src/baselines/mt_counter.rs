@@ -54,6 +54,9 @@ pub struct MtCounter<const N: usize> {
     have_dir: DFF<Bit>,
     dir: DFF<Bit>,
     m_count: DFF<Bits<N>>,
+    /// m ≠ 0, kept beside `m_count` (set by a counted step, cleared where `m_count` is) so
+    /// that no reduction of `m_count`'s N bits lies in front of the window-end decisions.
+    m_nonzero: DFF<Bit>,
     age: DFF<Bits<N>>,
     span: DFF<Bits<N>>,
     last: DFF<Bits<N>>,
@@ -68,8 +71,8 @@ pub struct MtCounter<const N: usize> {
     age_inc: Signal<Local, Bits<N>>,
     last_inc: Signal<Local, Bits<N>>,
     m_now: Signal<Local, Bits<N>>,
-    /// m' ≠ 0, from m ≠ 0 or a counted step (not from m' itself: that would put the
-    /// increment's carry chain in front of the window-end decisions).
+    /// m' ≠ 0, from the `m_nonzero` flag or a counted step (not from m' itself: that
+    /// would put the increment's carry chain in front of the window-end decisions).
     m_now_nonzero: Signal<Local, Bit>,
     span_now: Signal<Local, Bits<N>>,
     last_now: Signal<Local, Bits<N>>,
@@ -97,6 +100,7 @@ impl<const N: usize> Default for MtCounter<N> {
             have_dir: Default::default(),
             dir: Default::default(),
             m_count: Default::default(),
+            m_nonzero: Default::default(),
             age: Default::default(),
             span: Default::default(),
             last: Default::default(),
@@ -125,8 +129,8 @@ impl<const N: usize> Logic for MtCounter<N> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, anchored, have_dir, dir, m_count, age, span, last, m_reg, t_reg, neg_reg,
-            strobe_reg
+            self, clock, anchored, have_dir, dir, m_count, m_nonzero, age, span, last, m_reg,
+            t_reg, neg_reg, strobe_reg
         );
         self.timer.clock.next = self.clock.val();
         self.timer.reset.next = self.reset.val();
@@ -157,10 +161,12 @@ impl<const N: usize> Logic for MtCounter<N> {
             self.span_now.next = self.age_inc.val();
             self.last_now.next = self.zero.val();
         }
-        self.m_now_nonzero.next = (self.m_count.q.val() != self.zero.val()) | self.cont.val();
+        self.m_now_nonzero.next = self.m_nonzero.q.val() | self.cont.val();
         // Window end, or not.
         self.strobe_reg.d.next = self.tick.val() & self.anchored.q.val();
         self.m_count.d.next = self.m_now.val();
+        // A saturating increment never returns to 0: m' ≠ 0 exactly when m_now_nonzero.
+        self.m_nonzero.d.next = self.m_now_nonzero.val();
         self.span.d.next = self.span_now.val();
         self.age.d.next = self.age_inc.val();
         if self.tick.val() {
@@ -173,6 +179,7 @@ impl<const N: usize> Logic for MtCounter<N> {
                 self.neg_reg.d.next = !self.dir.q.val();
             }
             self.m_count.d.next = self.zero.val();
+            self.m_nonzero.d.next = false;
             self.span.d.next = self.zero.val();
             if self.m_now_nonzero.val() {
                 self.anchored.d.next = true;
@@ -184,6 +191,7 @@ impl<const N: usize> Logic for MtCounter<N> {
         if self.rev.val() {
             self.anchored.d.next = true;
             self.m_count.d.next = self.zero.val();
+            self.m_nonzero.d.next = false;
             self.age.d.next = self.zero.val();
             self.span.d.next = self.zero.val();
             self.last.d.next = self.zero.val();
@@ -197,6 +205,7 @@ impl<const N: usize> Logic for MtCounter<N> {
             self.have_dir.d.next = false;
             self.dir.d.next = false;
             self.m_count.d.next = self.zero.val();
+            self.m_nonzero.d.next = false;
             self.age.d.next = self.zero.val();
             self.span.d.next = self.zero.val();
             self.last.d.next = self.zero.val();

@@ -59,11 +59,16 @@ pub struct Timebase<const N: usize> {
     /// The ts count + 2, mod 2^N (the count is ts_plus_two − 2).
     pub(crate) ts_plus_two: DFF<Bits<N>>,
     cdt_count: DFF<Bits<N>>,
+    /// Cdt ≠ 0, kept beside `cdt_count` so that no reduction of its N bits lies in front of
+    /// `restart` and `tick`, which drive the enables of Table 1's registers.
+    cdt_nonzero: DFF<Bit>,
     /// count ≥ max(dt, 2) − 1 for the count and the dt of this cycle.
     due: DFF<Bit>,
     restart_now: Signal<Local, Bit>,
     tick_now: Signal<Local, Bit>,
-    cdt_after_pulse: Signal<Local, Bits<N>>,
+    /// Cdt + 1, from the register (the pulse's clear is applied after it, so that `lep`
+    /// is not in front of the carry chain).
+    cdt_plus_one: Signal<Local, Bits<N>>,
     zero: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
     two: Constant<Bits<N>>,
@@ -84,10 +89,11 @@ impl<const N: usize> Default for Timebase<N> {
             stalled: Default::default(),
             ts_plus_two: Default::default(),
             cdt_count: Default::default(),
+            cdt_nonzero: Default::default(),
             due: Default::default(),
             restart_now: Default::default(),
             tick_now: Default::default(),
-            cdt_after_pulse: Default::default(),
+            cdt_plus_one: Default::default(),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
             two: Constant::new(2.into()),
@@ -99,9 +105,9 @@ impl<const N: usize> Default for Timebase<N> {
 impl<const N: usize> Logic for Timebase<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, ts_plus_two, cdt_count, due);
+        dff_setup!(self, clock, ts_plus_two, cdt_count, cdt_nonzero, due);
         // Line 5: a pulse after at least one tick restarts the interval.
-        self.restart_now.next = self.lep.val() & (self.cdt_count.q.val() != self.zero.val());
+        self.restart_now.next = self.lep.val() & self.cdt_nonzero.q.val();
         // Line 8/12: never in a restart cycle (the count was just set to zero, dt >= 2).
         self.tick_now.next = !self.restart_now.val() & self.due.q.val();
         // The next count is count + 1: due then when count + 2 ≥ max(dt, 2), i.e. when
@@ -113,19 +119,26 @@ impl<const N: usize> Logic for Timebase<N> {
             self.ts_plus_two.d.next = self.two.val();
             self.due.d.next = false;
         }
-        // Line 11 then 13, saturating.
-        self.cdt_after_pulse.next = self.cdt_count.q.val();
-        if self.lep.val() {
-            self.cdt_after_pulse.next = self.zero.val();
+        // Line 11 then 13, saturating: a pulse clears Cdt, then a tick counts it; after a
+        // pulse Cdt is 0 or, with a tick, 1 (0 is never the saturated value).
+        self.cdt_plus_one.next = self.cdt_count.q.val() + self.one.val();
+        self.cdt_count.d.next = self.cdt_count.q.val();
+        if self.tick_now.val() & (self.cdt_count.q.val() != self.saturated.val()) {
+            self.cdt_count.d.next = self.cdt_plus_one.val();
         }
-        self.cdt_count.d.next = self.cdt_after_pulse.val();
-        if self.tick_now.val() & (self.cdt_after_pulse.val() != self.saturated.val()) {
-            self.cdt_count.d.next = self.cdt_after_pulse.val() + self.one.val();
+        self.cdt_nonzero.d.next = self.cdt_nonzero.q.val() | self.tick_now.val();
+        if self.lep.val() {
+            self.cdt_count.d.next = self.zero.val();
+            if self.tick_now.val() {
+                self.cdt_count.d.next = self.one.val();
+            }
+            self.cdt_nonzero.d.next = self.tick_now.val();
         }
         if self.reset.val() {
             self.ts_plus_two.d.next = self.two.val();
             self.due.d.next = false;
             self.cdt_count.d.next = self.zero.val();
+            self.cdt_nonzero.d.next = false;
         }
         self.tick.next = self.tick_now.val();
         self.restart.next = self.restart_now.val();

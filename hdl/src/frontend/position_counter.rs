@@ -16,7 +16,12 @@
 //!    resets the core), so p ≤ limit always holds. The two tests are registered flags
 //!    (`at_zero`, `at_limit`) set for the next position from equalities on the registers
 //!    (p = 1, p = R − 2, R = 1), so that no comparison's carry chain lies in front of the
-//!    position's incrementer: the position register is one adder away from itself.
+//!    position's incrementer: the position register is one adder away from itself. The
+//!    ±1 itself is two carry chains of half the width side by side: the low ⌈C/2⌉ bits,
+//!    and the high bits plus the carry or minus the borrow of the low half, which are two
+//!    more registered flags (low half all ones, low half 0) set the same way. A 32-bit
+//!    chain from a register that fans out across the core was the slowest path of the
+//!    core on the iCE40.
 //! 3. On rise: `cfg_z_mode` 2 or 3 latches p (this edge's step included) into `z_latch`;
 //!    `cfg_z_mode` 1 or 3 sets the position to 0 instead of p; `index` is high after the edge.
 //! 4. Revolution check. The steps since the last index edge are counted (saturating one
@@ -39,6 +44,9 @@
 //! high): position, latch, flags and counters 0; z_delay and z_prev 1.
 
 use rust_hdl::prelude::*;
+
+/// Width of the shift-amount constant.
+const SHIFT_BITS: usize = 8;
 
 /// Position counter with C-bit position and G-bit revolution-error counter.
 #[derive(LogicBlock)]
@@ -76,6 +84,11 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     not_zero: DFF<Bit>,
     /// position = limit.
     at_limit: DFF<Bit>,
+    /// The low half of the position is all ones: the carry into the high half.
+    low_all_ones: DFF<Bit>,
+    /// The low half of the position is not 0 (stored inverted, like `not_zero`): no borrow
+    /// from the high half.
+    low_not_zero: DFF<Bit>,
     latch_reg: DFF<Bits<C>>,
     index_reg: DFF<Bit>,
     z_delay: DFF<Bit>,
@@ -95,6 +108,17 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     /// The flags of `stepped`.
     stepped_not_zero: Signal<Local, Bit>,
     stepped_at_limit: Signal<Local, Bit>,
+    stepped_low_all_ones: Signal<Local, Bit>,
+    stepped_low_not_zero: Signal<Local, Bit>,
+    /// position + 1 and position − 1, each from two carry chains of half the width.
+    plus_one: Signal<Local, Bits<C>>,
+    minus_one: Signal<Local, Bits<C>>,
+    /// The low and high halves of the position (the other half's bits 0).
+    low: Signal<Local, Bits<C>>,
+    high: Signal<Local, Bits<C>>,
+    /// `limit`'s low half is all ones / is 0.
+    limit_low_all_ones: Signal<Local, Bit>,
+    limit_low_zero: Signal<Local, Bit>,
     /// R = 1: position 0 is also the limit.
     single: Signal<Local, Bit>,
     rise: Signal<Local, Bit>,
@@ -107,6 +131,12 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     pos_zero: Constant<Bits<C>>,
     pos_one: Constant<Bits<C>>,
     pos_max: Constant<Bits<C>>,
+    /// The low half's bits, ⌈C/2⌉ of them.
+    low_mask: Constant<Bits<C>>,
+    /// The low half's largest value less one.
+    low_max_less_one: Constant<Bits<C>>,
+    /// ⌈C/2⌉: the shift that brings the high half down.
+    low_width: Constant<Bits<SHIFT_BITS>>,
     mode_ignore: Constant<Bits<2>>,
     mode_reset: Constant<Bits<2>>,
     mode_latch: Constant<Bits<2>>,
@@ -118,6 +148,8 @@ pub struct PositionCounter<const C: usize, const G: usize> {
 
 impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
     fn default() -> Self {
+        // The low half: ⌈C/2⌉ bits, so that it is never empty.
+        let low = C.div_ceil(2);
         assert!(
             (1..=32).contains(&C) && (1..=32).contains(&G),
             "widths 1..=32"
@@ -141,6 +173,8 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             position_reg: Default::default(),
             not_zero: Default::default(),
             at_limit: Default::default(),
+            low_all_ones: Default::default(),
+            low_not_zero: Default::default(),
             latch_reg: Default::default(),
             index_reg: Default::default(),
             z_delay: Default::default(),
@@ -158,6 +192,14 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             stepped: Default::default(),
             stepped_not_zero: Default::default(),
             stepped_at_limit: Default::default(),
+            stepped_low_all_ones: Default::default(),
+            stepped_low_not_zero: Default::default(),
+            plus_one: Default::default(),
+            minus_one: Default::default(),
+            low: Default::default(),
+            high: Default::default(),
+            limit_low_all_ones: Default::default(),
+            limit_low_zero: Default::default(),
             single: Default::default(),
             rise: Default::default(),
             any_now: Default::default(),
@@ -169,6 +211,9 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             pos_zero: Constant::new(0.into()),
             pos_one: Constant::new(1.into()),
             pos_max: Constant::new(((1u64 << C) - 1).into()),
+            low_mask: Constant::new(((1u64 << low) - 1).into()),
+            low_max_less_one: Constant::new(((1u64 << low) - 2).into()),
+            low_width: Constant::new((low as u64).into()),
             mode_ignore: Constant::new(u64::from(Z_MODE_IGNORE).into()),
             mode_reset: Constant::new(u64::from(Z_MODE_RESET).into()),
             mode_latch: Constant::new(u64::from(Z_MODE_LATCH).into()),
@@ -189,6 +234,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             position_reg,
             not_zero,
             at_limit,
+            low_all_ones,
+            low_not_zero,
             latch_reg,
             index_reg,
             z_delay,
@@ -209,18 +256,43 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
 
         // The stepped position, modulo R, and its flags.
         self.single.next = self.limit.val() == self.pos_zero.val();
+        // p ± 1 in two halves: the high half adds the registered carry (low half all ones)
+        // or subtracts the registered borrow (low half 0), so each carry chain is half as
+        // long and the two run side by side.
+        self.low.next = self.position_reg.q.val() & self.low_mask.val();
+        self.high.next = self.position_reg.q.val() >> self.low_width.val();
+        self.plus_one.next = ((self.low.val() + self.pos_one.val()) & self.low_mask.val())
+            | (self.high.val() << self.low_width.val());
+        if self.low_all_ones.q.val() {
+            self.plus_one.next = (self.high.val() + self.pos_one.val()) << self.low_width.val();
+        }
+        self.minus_one.next = ((self.low.val() - self.pos_one.val()) & self.low_mask.val())
+            | (self.high.val() << self.low_width.val());
+        if !self.low_not_zero.q.val() {
+            self.minus_one.next = ((self.high.val() - self.pos_one.val()) << self.low_width.val())
+                | self.low_mask.val();
+        }
+        self.limit_low_all_ones.next =
+            (self.limit.val() & self.low_mask.val()) == self.low_mask.val();
+        self.limit_low_zero.next = (self.limit.val() & self.low_mask.val()) == self.pos_zero.val();
         self.stepped.next = self.position_reg.q.val();
         self.stepped_not_zero.next = self.not_zero.q.val();
         self.stepped_at_limit.next = self.at_limit.q.val();
+        self.stepped_low_all_ones.next = self.low_all_ones.q.val();
+        self.stepped_low_not_zero.next = self.low_not_zero.q.val();
         if self.step.val() & self.forward.val() {
             if self.at_limit.q.val() {
                 self.stepped.next = self.pos_zero.val();
                 self.stepped_not_zero.next = false;
                 self.stepped_at_limit.next = self.single.val();
+                self.stepped_low_all_ones.next = false;
+                self.stepped_low_not_zero.next = false;
             } else {
-                self.stepped.next = self.position_reg.q.val() + self.pos_one.val();
+                self.stepped.next = self.plus_one.val();
                 self.stepped_not_zero.next = true;
                 self.stepped_at_limit.next = self.position_reg.q.val() == self.limit_less_one.val();
+                self.stepped_low_all_ones.next = self.low.val() == self.low_max_less_one.val();
+                self.stepped_low_not_zero.next = !self.low_all_ones.q.val();
             }
         }
         if self.step.val() & !self.forward.val() {
@@ -228,10 +300,14 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
                 self.stepped.next = self.limit.val();
                 self.stepped_not_zero.next = !self.single.val();
                 self.stepped_at_limit.next = true;
+                self.stepped_low_all_ones.next = self.limit_low_all_ones.val();
+                self.stepped_low_not_zero.next = !self.limit_low_zero.val();
             } else {
-                self.stepped.next = self.position_reg.q.val() - self.pos_one.val();
+                self.stepped.next = self.minus_one.val();
                 self.stepped_not_zero.next = self.position_reg.q.val() != self.pos_one.val();
                 self.stepped_at_limit.next = false;
+                self.stepped_low_all_ones.next = !self.low_not_zero.q.val();
+                self.stepped_low_not_zero.next = self.low.val() != self.pos_one.val();
             }
         }
 
@@ -283,6 +359,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
         self.position_reg.d.next = self.stepped.val();
         self.not_zero.d.next = self.stepped_not_zero.val();
         self.at_limit.d.next = self.stepped_at_limit.val();
+        self.low_all_ones.d.next = self.stepped_low_all_ones.val();
+        self.low_not_zero.d.next = self.stepped_low_not_zero.val();
         self.index_reg.d.next = self.rise.val();
         self.fault_reg.d.next = false;
         self.rev_any.d.next = self.any_now.val();
@@ -302,6 +380,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
                 self.position_reg.d.next = self.pos_zero.val();
                 self.not_zero.d.next = false;
                 self.at_limit.d.next = self.single.val();
+                self.low_all_ones.d.next = false;
+                self.low_not_zero.d.next = false;
             }
             if self.bad.val() {
                 self.error_reg.d.next = true;
@@ -320,6 +400,8 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             self.position_reg.d.next = self.pos_zero.val();
             self.not_zero.d.next = false;
             self.at_limit.d.next = self.single.val();
+            self.low_all_ones.d.next = false;
+            self.low_not_zero.d.next = false;
             self.latch_reg.d.next = self.pos_zero.val();
             self.index_reg.d.next = false;
             self.z_delay.d.next = true;

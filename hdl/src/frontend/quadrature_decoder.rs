@@ -13,7 +13,9 @@
 //!
 //! Ports: `a`, `b` (filtered channels), `cfg_mode[1:0]` (0 = x1, 1 = x2, 2 = x4, 3 = x4 and
 //! `mode_error`). Registered outputs: `step` and `forward` (one cycle per step; `forward` is
-//! low without a step), `direction` (of the last step, 1 = forward), `illegal` (one cycle),
+//! low without a step), `first` (with `step`: the first step since reset, or a step against
+//! the last one, a reversal; low without a step), `direction` (of the last step, 1 =
+//! forward), `illegal` (one cycle),
 //! `illegal_seen` (sticky), `illegal_count[G-1:0]` (saturating). `mode_error` is
 //! combinational from `cfg_mode`.
 //!
@@ -42,6 +44,8 @@ pub struct QuadratureDecoder<const G: usize> {
     pub step: Signal<Out, Bit>,
     /// With `step`: the step is forward.
     pub forward: Signal<Out, Bit>,
+    /// With `step`: the first step since reset, or one against the last step.
+    pub first: Signal<Out, Bit>,
     /// Direction of the last step (1 = forward).
     pub direction: Signal<Out, Bit>,
     /// One cycle per illegal transition.
@@ -58,6 +62,9 @@ pub struct QuadratureDecoder<const G: usize> {
     step_reg: DFF<Bit>,
     forward_reg: DFF<Bit>,
     direction_reg: DFF<Bit>,
+    /// A step since reset: `direction_reg` holds a real direction.
+    have_step: DFF<Bit>,
+    first_reg: DFF<Bit>,
     illegal_reg: DFF<Bit>,
     seen_reg: DFF<Bit>,
     count_reg: DFF<Bits<G>>,
@@ -86,6 +93,7 @@ impl<const G: usize> Default for QuadratureDecoder<G> {
             cfg_mode: Default::default(),
             step: Default::default(),
             forward: Default::default(),
+            first: Default::default(),
             direction: Default::default(),
             illegal: Default::default(),
             illegal_seen: Default::default(),
@@ -97,6 +105,8 @@ impl<const G: usize> Default for QuadratureDecoder<G> {
             step_reg: Default::default(),
             forward_reg: Default::default(),
             direction_reg: Default::default(),
+            have_step: Default::default(),
+            first_reg: Default::default(),
             illegal_reg: Default::default(),
             seen_reg: Default::default(),
             count_reg: Default::default(),
@@ -128,6 +138,8 @@ impl<const G: usize> Logic for QuadratureDecoder<G> {
             step_reg,
             forward_reg,
             direction_reg,
+            have_step,
+            first_reg,
             illegal_reg,
             seen_reg,
             count_reg
@@ -151,8 +163,13 @@ impl<const G: usize> Logic for QuadratureDecoder<G> {
         self.primed.d.next = true;
         self.step_reg.d.next = self.step_now.val();
         self.forward_reg.d.next = self.step_now.val() & self.forward_now.val();
+        // `first` is found here, a register, rather than by the core from `step` and
+        // `forward`: it restarts the estimator, the widest fan-out after the reset.
+        self.first_reg.d.next = self.step_now.val()
+            & (!self.have_step.q.val() | (self.forward_now.val() ^ self.direction_reg.q.val()));
         if self.step_now.val() {
             self.direction_reg.d.next = self.forward_now.val();
+            self.have_step.d.next = true;
         }
         self.illegal_reg.d.next = self.illegal_now.val();
         if self.illegal_now.val() {
@@ -168,12 +185,15 @@ impl<const G: usize> Logic for QuadratureDecoder<G> {
             self.step_reg.d.next = false;
             self.forward_reg.d.next = false;
             self.direction_reg.d.next = false;
+            self.have_step.d.next = false;
+            self.first_reg.d.next = false;
             self.illegal_reg.d.next = false;
             self.seen_reg.d.next = false;
             self.count_reg.d.next = self.count_zero.val();
         }
         self.step.next = self.step_reg.q.val();
         self.forward.next = self.forward_reg.q.val();
+        self.first.next = self.first_reg.q.val();
         self.direction.next = self.direction_reg.q.val();
         self.illegal.next = self.illegal_reg.q.val();
         self.illegal_seen.next = self.seen_reg.q.val();

@@ -159,7 +159,6 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     mt: MtCounter<N>,
     baseline: BaselineSpeeds<N, F, S>,
     faults: FaultFlags,
-    have_dir: DFF<Bit>,
     last_dir: DFF<Bit>,
     et_have: DFF<Bit>,
     /// The effective dt, powered up at the generation default (the window timers read it
@@ -285,7 +284,6 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             mt: Default::default(),
             baseline: Default::default(),
             faults: Default::default(),
-            have_dir: Default::default(),
             last_dir: Default::default(),
             et_have: Default::default(),
             dt_reg: DFFWithInit::new(p.dt_cycles().into()),
@@ -335,7 +333,6 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         dff_setup!(
             self,
             clock,
-            have_dir,
             last_dir,
             et_have,
             dt_reg,
@@ -424,17 +421,16 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.counter.cfg_z_mode.next = self.z_mode_reg.q.val();
 
         // The first step of a direction (after reset or a reversal) restarts the estimator
-        // at that step, counted as its first pulse.
-        self.first_step.next = self.decoder.step.val()
-            & (!self.have_dir.q.val() | (self.decoder.forward.val() ^ self.last_dir.q.val()));
+        // at that step, counted as its first pulse. The decoder finds it as a register (its
+        // resets include every core reset, and no step passes its start-up hold), so the
+        // estimator's reset is `rst` or one flip-flop.
+        self.first_step.next = self.decoder.first.val();
         self.engine_reset.next = self.rst.val() | self.first_step.val();
         self.step_counted.next = self.decoder.step.val() & !self.rst.val();
         if self.decoder.step.val() {
-            self.have_dir.d.next = true;
             self.last_dir.d.next = self.decoder.forward.val();
         }
         if self.rst.val() {
-            self.have_dir.d.next = false;
             self.last_dir.d.next = false;
         }
 

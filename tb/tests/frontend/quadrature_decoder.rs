@@ -72,6 +72,7 @@ fn rust_hdl(stim: &[DecoderInputs]) -> Vec<DecoderOutputs> {
             DecoderOutputs {
                 step: uut.step.val(),
                 forward: uut.forward.val(),
+                first: uut.first.val(),
                 direction: uut.direction.val(),
                 illegal: uut.illegal.val(),
                 illegal_seen: uut.illegal_seen.val(),
@@ -120,6 +121,7 @@ fn emitted_verilog_equals_golden_in_icarus() {
             vec![
                 u64::from(o.step),
                 u64::from(o.forward),
+                u64::from(o.first),
                 u64::from(o.direction),
                 u64::from(o.illegal),
                 u64::from(o.illegal_seen),
@@ -147,6 +149,7 @@ fn emitted_verilog_equals_golden_in_icarus() {
         &[
             ("step", 1),
             ("forward", 1),
+            ("first", 1),
             ("direction", 1),
             ("illegal", 1),
             ("illegal_seen", 1),
