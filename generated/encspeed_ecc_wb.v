@@ -1164,7 +1164,6 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
     reg  [31:0] window_now;
     reg  rst;
     reg  front_reset;
-    reg  first_step;
     reg  step_counted;
     reg  engine_reset;
     reg  [23:0] dt_eff;
@@ -1565,8 +1564,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         counter$limit = limit;
         counter$limit_less_one = limit_less_one;
         counter$cfg_z_mode = z_mode_reg$q;
-        first_step = decoder$first;
-        engine_reset = rst | first_step;
+        engine_reset = rst | decoder$first;
         step_counted = decoder$step & ~rst;
         if (decoder$step) begin
             last_dir$d = decoder$forward;
@@ -3608,7 +3606,7 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
     localparam  count_zero = 6'b0;
     localparam  count_one = 6'b1;
     localparam  count_first = 6'b101000;
-    localparam  count_mul_last = 6'b10000;
+    localparam  count_before_mul_last = 6'b10001;
     localparam  st_idle = 2'b0;
     localparam  st_setup = 2'b1;
     localparam  st_step = 2'b10;
@@ -3669,6 +3667,9 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
     reg  mul_on$d;
     wire  mul_on$q;
     reg  mul_on$clock;
+    reg  mul_last$d;
+    wire  mul_last$q;
+    reg  mul_last$clock;
     reg  [48:0] part_rem$d;
     wire  [48:0] part_rem$q;
     reg  part_rem$clock;
@@ -3708,6 +3709,12 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
+    reg  [48:0] nep_less_one$d;
+    wire  [48:0] nep_less_one$q;
+    reg  nep_less_one$clock;
+    reg  [48:0] ndt_plus_one$d;
+    wire  [48:0] ndt_plus_one$q;
+    reg  ndt_plus_one$clock;
     reg  div_sub$clock;
     reg  [48:0] div_sub$a;
     reg  [48:0] div_sub$b;
@@ -3735,11 +3742,8 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
     reg  [48:0] num_sel;
     reg  [48:0] den_sel;
     reg  [48:0] shifted;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  diff_msb;
+    reg  rem_negative;
     reg  fits;
-    reg  [48:0] next_rem;
     reg  x_bit;
     reg  [40:0] half;
     reg  round_bit;
@@ -3837,6 +3841,11 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         .q(mul_on$q),
         .clock(mul_on$clock)
     );
+    encspeed_ecc_wb$ecc$core$calc$mul_last mul_last(
+        .d(mul_last$d),
+        .q(mul_last$q),
+        .clock(mul_last$clock)
+    );
     encspeed_ecc_wb$ecc$core$calc$part_rem part_rem(
         .d(part_rem$d),
         .q(part_rem$q),
@@ -3902,6 +3911,16 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         .q(valid_reg$q),
         .clock(valid_reg$clock)
     );
+    encspeed_ecc_wb$ecc$core$calc$nep_less_one nep_less_one(
+        .d(nep_less_one$d),
+        .q(nep_less_one$q),
+        .clock(nep_less_one$clock)
+    );
+    encspeed_ecc_wb$ecc$core$calc$ndt_plus_one ndt_plus_one(
+        .d(ndt_plus_one$d),
+        .q(ndt_plus_one$q),
+        .clock(ndt_plus_one$clock)
+    );
     encspeed_ecc_wb$ecc$core$calc$div_sub div_sub(
         .clock(div_sub$clock),
         .a(div_sub$a),
@@ -3950,6 +3969,7 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         count$clock = clock;
         second$clock = clock;
         mul_on$clock = clock;
+        mul_last$clock = clock;
         part_rem$clock = clock;
         num_shift$clock = clock;
         den$clock = clock;
@@ -3963,6 +3983,8 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         out_n2$clock = clock;
         out_n3$clock = clock;
         valid_reg$clock = clock;
+        nep_less_one$clock = clock;
+        ndt_plus_one$clock = clock;
         req_nep$d = req_nep$q;
         req_ndt$d = req_ndt$q;
         req_neg$d = req_neg$q;
@@ -3980,6 +4002,7 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         count$d = count$q;
         second$d = second$q;
         mul_on$d = mul_on$q;
+        mul_last$d = mul_last$q;
         part_rem$d = part_rem$q;
         num_shift$d = num_shift$q;
         den$d = den$q;
@@ -3993,6 +4016,8 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         out_n2$d = out_n2$q;
         out_n3$d = out_n3$q;
         valid_reg$d = valid_reg$q;
+        nep_less_one$d = nep_less_one$q;
+        ndt_plus_one$d = ndt_plus_one$q;
         div_sub$clock = clock;
         mul_den$clock = clock;
         mul_num$clock = clock;
@@ -4289,14 +4314,16 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         end
         nep_wide = nep_wide >> sh_low;
         ndt_wide = ndt_wide >> sh_low;
+        nep_less_one$d = nep_wide - p_one;
+        ndt_plus_one$d = ndt_wide + p_one;
         num_sel = nep_wide;
         den_sel = ndt_wide;
         if (phase$q == ph_two) begin
             if (w_high$q) begin
-                num_sel = nep_wide - p_one;
+                num_sel = nep_less_one$q;
             end
             else begin
-                den_sel = ndt_wide + p_one;
+                den_sel = ndt_plus_one$q;
             end
         end
         if (phase$q == ph_three) begin
@@ -4313,17 +4340,15 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         if ((num_shift$q & p_msb) != p_zero) begin
             shifted = (part_rem$q << sh_one) | p_one;
         end
+        rem_negative = (part_rem$q & p_msb) != p_zero;
         div_sub$a = shifted;
         div_sub$b = ~den$q;
         div_sub$carry_in = 1'b1;
-        shifted_msb = (shifted & p_msb) != p_zero;
-        den_msb = (den$q & p_msb) != p_zero;
-        diff_msb = (div_sub$sum & p_msb) != p_zero;
-        fits = ((part_rem$q & p_msb) != p_zero) | (shifted_msb & ~den_msb) | ((shifted_msb | ~den_msb) & ~diff_msb);
-        next_rem = shifted;
-        if (fits) begin
-            next_rem = div_sub$sum;
+        if (rem_negative) begin
+            div_sub$b = den$q;
+            div_sub$carry_in = 1'b0;
         end
+        fits = (div_sub$sum & p_msb) == p_zero;
         x_bit = (mul_x$q & p_x_msb) != p_zero;
         mul_den$a = acc_den$q << sh_one;
         mul_den$b = p_zero;
@@ -4333,7 +4358,7 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
         mul_num$carry_in = 1'b0;
         if (x_bit) begin
             mul_den$b = ndt_wide;
-            if (count$q != count_mul_last) begin
+            if (~mul_last$q) begin
                 mul_num$b = nep_wide;
             end
         end
@@ -4420,6 +4445,7 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
             den$d = den_sel;
             quo$d = s_zero;
             count$d = count_first;
+            mul_last$d = 1'b0;
             state$d = st_step;
             if (phase$q == ph_one) begin
                 mul_x$d = (nep_wide << sh_one) - p_one;
@@ -4435,18 +4461,19 @@ module encspeed_ecc_wb$ecc$core$calc(clock,reset,start,nep,ndt,negative,mode_shi
             end
         end
         if ((state$q == st_step) & second$q) begin
-            part_rem$d = next_rem;
+            part_rem$d = div_sub$sum;
             num_shift$d = num_shift$q << sh_one;
             quo$d = quo$q << sh_one;
             if (fits) begin
                 quo$d = (quo$q << sh_one) | s_one;
             end
             count$d = count$q - count_one;
+            mul_last$d = count$q == count_before_mul_last;
             if (mul_on$q) begin
                 mul_x$d = mul_x$q << sh_one;
                 acc_num$d = mul_num$sum;
                 acc_den$d = mul_den$sum;
-                if (count$q == count_mul_last) begin
+                if (mul_last$q) begin
                     mul_on$d = 1'b0;
                 end
             end
@@ -4846,6 +4873,25 @@ module encspeed_ecc_wb$ecc$core$calc$mul_den$low(d,q,clock);
 endmodule // encspeed_ecc_wb$ecc$core$calc$mul_den$low
 
 
+module encspeed_ecc_wb$ecc$core$calc$mul_last(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$calc$mul_last
+
+
 module encspeed_ecc_wb$ecc$core$calc$mul_num(clock,a,b,carry_in,sum);
     
     // Module arguments
@@ -5021,6 +5067,44 @@ module encspeed_ecc_wb$ecc$core$calc$mul_x(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$calc$mul_x
+
+
+module encspeed_ecc_wb$ecc$core$calc$ndt_plus_one(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$calc$ndt_plus_one
+
+
+module encspeed_ecc_wb$ecc$core$calc$nep_less_one(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$calc$nep_less_one
 
 
 module encspeed_ecc_wb$ecc$core$calc$num_shift(d,q,clock);
@@ -9206,7 +9290,7 @@ module encspeed_ecc_wb$ecc$core$startup(clock,reset,cfg_filter,front_reset);
     
     // Local signals
     reg  hold;
-    reg  [15:0] filter_delay;
+    reg  reached;
     
     // Sub module instances
     encspeed_ecc_wb$ecc$core$startup$released released(
@@ -9240,10 +9324,7 @@ module encspeed_ecc_wb$ecc$core$startup(clock,reset,cfg_filter,front_reset);
         settle_edges$d = settle_edges$q;
         done$d = done$q;
         released$d = released$q;
-        filter_delay = cfg_filter;
-        if (cfg_filter == zero) begin
-            filter_delay = one;
-        end
+        reached = (settle_edges$q >= cfg_filter) & (settle_edges$q != zero);
         if (sync_edges$q != two) begin
             sync_edges$d = sync_edges$q + sync_one;
         end
@@ -9251,7 +9332,7 @@ module encspeed_ecc_wb$ecc$core$startup(clock,reset,cfg_filter,front_reset);
             settle_edges$d = settle_edges$q + one;
         end
         done$d = done$q;
-        if ((sync_edges$q == two) & (settle_edges$q >= filter_delay)) begin
+        if ((sync_edges$q == two) & reached) begin
             done$d = 1'b1;
         end
         if (reset) begin
@@ -9259,7 +9340,7 @@ module encspeed_ecc_wb$ecc$core$startup(clock,reset,cfg_filter,front_reset);
             sync_edges$d = sync_zero;
             settle_edges$d = zero;
         end
-        hold = ~done$q & ((sync_edges$q != two) | (settle_edges$q < filter_delay));
+        hold = ~done$q & ((sync_edges$q != two) | ~reached);
         released$d = ~(reset | hold);
         front_reset = reset | ~released$q;
     end

@@ -65,13 +65,23 @@
 //! (L = 1 + 3·(2 + 2S) + 2). The operands of each addition are registers that change only
 //! at the second cycle's edge.
 //!
-//! * **Divider** (restoring, radix 2, shared by the three divisions). For num/den with
+//! * **Divider** (non-restoring, radix 2, shared by the three divisions). For num/den with
 //!   num < den·2^N, the partial remainder R is preloaded with num >> N (< den), the low N
 //!   bits of num wait at the top of a shift register, and each step brings down one bit
 //!   (zeros once the N bits are used), so S steps give ⌊num·2^(F+1)/den⌋ without forming
-//!   num·2^(F+1): R needs P = 2N + 1 bits, and the trial value 2R + b its carry bit, as in
-//!   [`SeqDivider`](crate::SeqDivider). Then the magnitude (q + 1) >> 1 is the value
-//!   rounded to nearest, ties up. The algorithm is [`golden::estimator::speed_calc::long_division`].
+//!   num·2^(F+1). Then the magnitude (q + 1) >> 1 is the value rounded to nearest, ties up.
+//!   The quotient is that of the restoring algorithm,
+//!   [`golden::estimator::speed_calc::long_division`]; only the remainder is kept
+//!   differently. A step from R ≥ 0 gives 2R + b − den, a step from R < 0 gives
+//!   2R + b + den, and the quotient bit is 1 when the new R is ≥ 0. Where restoring division
+//!   holds a remainder R_r, this one holds R_r or R_r − den, and 2(R_r − den) + b + den =
+//!   2R_r + b − den: the same next remainder and the same bit. Every denominator is below
+//!   2^(P−1) (n1, n2 and the low-speed n3: at most 2^(N+1) − 1; the high-speed n3:
+//!   Ndt·(2·Nep − 1) with Ndt ≤ ⌊Nep/2⌋ < 2^(N−1)), so R ∈ [−den, den) is a P-bit two's
+//!   complement value and the sum taken mod 2^P is exact even when 2R + b is not. The new
+//!   remainder is the adder's sum as it is and the quotient bit its top bit inverted: no
+//!   comparator and no multiplexer behind the carry chain (the restoring form's "fits"
+//!   selected all P remainder bits at the end of the chain, a critical path on the HX8K).
 //! * **Multiplier** (shift-add, MSB first, during the first N + 1 steps of the n1 division).
 //!   With X = 2·Nep − 1 (odd, N + 1 bits): Ndt·(2·Nep − 1) = Ndt·X and
 //!   2·Nep·(Nep − 1) = Nep·(X − 1), where X − 1 is X with bit 0 cleared: both accumulate
@@ -84,9 +94,8 @@
 //! Widths never change inside an expression (rust-hdl emits literals 32 bits wide and
 //! casts as masks that Verilator flags), so the N-bit request is widened to P bits by a
 //! shift-in loop (wires after synthesis) and every constant is a `Constant` of its
-//! operand's width. The divider's step is the restoring step of
-//! [`golden::arith::div_step::div_step`]: 2R + b − den computed as 2R + b + ~den + 1 on the
-//! two-cycle adder, whose carry out is "2R + b ≥ den" (no comparator), or R's top bit.
+//! operand's width. The divider's subtraction is 2R + b + ~den + 1 on the two-cycle adder,
+//! its addition 2R + b + den + 0: the sign register picks den or ~den and the carry in.
 //!
 //! # Rounding, mode scaling and sign in one adder
 //!
@@ -104,13 +113,15 @@
 //!
 //! # Resources
 //!
-//! Registers: the request (2N + 4), its working copy (2N + 6), the divider (3P + S), the
-//! multiplier (3P), staging and outputs (5S), a 6-bit step counter, 9 control bits, and
-//! in the four two-cycle adders the low sums and the high operands (about 2P each for the
-//! divider and the multiplier, 2S for the rounding). For N = 24, F = 16, yosys 0.23
-//! `synth_ice40` maps the block (as it sits in the generated `encspeed_core`) to 826
-//! flip-flops, 914 LUT4 and 282 carry cells (608, 867 and 278 with one-cycle 49- and 41-bit
-//! additions). The split took the block off the critical path of `encspeed_wb` on the
+//! Registers: the request (2N + 4), its working copy (2N + 6), Nep − 1 and Ndt + 1 (2P, of
+//! which yosys keeps about 2N + 2: the high bits of Ndt + 1 are constant), the divider
+//! (3P + S), the multiplier (3P), staging and outputs (5S), a 6-bit step counter, 10
+//! control bits, and in the four two-cycle adders the low sums and the high operands
+//! (about 2P each for the divider and the multiplier, 2S for the rounding). For N = 24,
+//! F = 16, yosys 0.23 `synth_ice40` maps the block (as it sits in the generated
+//! `encspeed_core`) to 877 flip-flops, 918 LUT4 and 278 carry cells (826, 914 and 282
+//! with the restoring divider and n2's operands formed at the set-up; 608, 867 and 278
+//! with one-cycle 49- and 41-bit additions). The split took the block off the critical path of `encspeed_wb` on the
 //! iCE40 HX8K: before, the divider's 49-bit trial subtraction was 10.5 ns of an 18 ns path
 //! (docs/design-decisions.md, "Timing closure on the iCE40").
 
@@ -186,6 +197,9 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     second: DFF<Bit>,
     /// The multiplier steps (the first N + 1 steps of the n1 division).
     mul_on: DFF<Bit>,
+    /// `count` = F, the last multiplier step (set with `count`, from its set-up on): a
+    /// register, so that no decode of `count` is in front of the multiplier's adders.
+    mul_last: DFF<Bit>,
     // Divider.
     part_rem: DFF<Bits<P>>,
     num_shift: DFF<Bits<P>>,
@@ -206,18 +220,22 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     /// The working Nep and Ndt widened to P bits.
     nep_wide: Signal<Local, Bits<P>>,
     ndt_wide: Signal<Local, Bits<P>>,
+    /// Nep − 1 and Ndt + 1 at P bits, registered at every edge from the working copy
+    /// (steady from the request's take to the second set-up, which reads them): the
+    /// operands of n2 come out of a multiplexer, with no carry chain in front of the
+    /// divider's registers.
+    nep_less_one: DFF<Bits<P>>,
+    ndt_plus_one: DFF<Bits<P>>,
     num_sel: Signal<Local, Bits<P>>,
     den_sel: Signal<Local, Bits<P>>,
     /// The divider's trial subtraction 2R + b − den (as 2R + b + ~den + 1), over two cycles.
     div_sub: crate::arith::two_cycle_adder::TwoCycleAdder<P>,
     /// 2R + b: the partial remainder shifted, with the numerator bit brought down.
     shifted: Signal<Local, Bits<P>>,
-    shifted_msb: Signal<Local, Bit>,
-    den_msb: Signal<Local, Bit>,
-    diff_msb: Signal<Local, Bit>,
-    /// The quotient bit: R's top bit (the trial value's carry) or 2R + b ≥ den.
+    /// R < 0 (R's top bit, a register): this step adds den instead of subtracting it.
+    rem_negative: Signal<Local, Bit>,
+    /// The quotient bit: the new remainder is not negative (the sum's top bit is 0).
     fits: Signal<Local, Bit>,
-    next_rem: Signal<Local, Bits<P>>,
     x_bit: Signal<Local, Bit>,
     /// The multiplier's accumulations acc·2 + (Ndt or 0) and acc·2 + (Nep or 0), over two
     /// cycles each.
@@ -271,8 +289,8 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     count_one: Constant<Bits<COUNT_BITS>>,
     /// S − 1: loaded at each set-up.
     count_first: Constant<Bits<COUNT_BITS>>,
-    /// S − N − 1 = F: the count of the last multiplier step.
-    count_mul_last: Constant<Bits<COUNT_BITS>>,
+    /// S − N − 1 + 1 = F + 1: the count of the step before the last multiplier step.
+    count_before_mul_last: Constant<Bits<COUNT_BITS>>,
     st_idle: Constant<Bits<STATE_BITS>>,
     st_setup: Constant<Bits<STATE_BITS>>,
     st_step: Constant<Bits<STATE_BITS>>,
@@ -327,6 +345,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             count: Default::default(),
             second: Default::default(),
             mul_on: Default::default(),
+            mul_last: Default::default(),
             part_rem: Default::default(),
             num_shift: Default::default(),
             den: Default::default(),
@@ -342,15 +361,14 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             valid_reg: Default::default(),
             nep_wide: Default::default(),
             ndt_wide: Default::default(),
+            nep_less_one: Default::default(),
+            ndt_plus_one: Default::default(),
             num_sel: Default::default(),
             den_sel: Default::default(),
             div_sub: Default::default(),
             shifted: Default::default(),
-            shifted_msb: Default::default(),
-            den_msb: Default::default(),
-            diff_msb: Default::default(),
+            rem_negative: Default::default(),
             fits: Default::default(),
-            next_rem: Default::default(),
             x_bit: Default::default(),
             mul_den: Default::default(),
             mul_num: Default::default(),
@@ -391,7 +409,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             count_zero: Constant::new(0.into()),
             count_one: Constant::new(1.into()),
             count_first: Constant::new(c(S - 1).into()),
-            count_mul_last: Constant::new(c(S - N - 1).into()),
+            count_before_mul_last: Constant::new(c(S - N).into()),
             st_idle: Constant::new(0.into()),
             st_setup: Constant::new(1.into()),
             st_step: Constant::new(2.into()),
@@ -409,10 +427,41 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, req_nep, req_ndt, req_neg, req_shift, pending, w_nep, w_ndt, w_high,
-            w_neg, w_shift, w_nep_zero, w_ndt_zero, state, phase, count, second, mul_on, part_rem,
-            num_shift, den, quo, mul_x, acc_num, acc_den, stage_n1, stage_n2, out_n1, out_n2,
-            out_n3, valid_reg
+            self,
+            clock,
+            req_nep,
+            req_ndt,
+            req_neg,
+            req_shift,
+            pending,
+            w_nep,
+            w_ndt,
+            w_high,
+            w_neg,
+            w_shift,
+            w_nep_zero,
+            w_ndt_zero,
+            state,
+            phase,
+            count,
+            second,
+            mul_on,
+            mul_last,
+            part_rem,
+            num_shift,
+            den,
+            quo,
+            mul_x,
+            acc_num,
+            acc_den,
+            stage_n1,
+            stage_n2,
+            out_n1,
+            out_n2,
+            out_n3,
+            valid_reg,
+            nep_less_one,
+            ndt_plus_one
         );
         clock!(self, clock, div_sub, mul_den, mul_num, round_add);
         // Widen the working Nep and Ndt to P bits: shift their bits in at the top, LSB
@@ -434,15 +483,17 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         self.nep_wide.next = self.nep_wide.val() >> self.sh_low.val();
         self.ndt_wide.next = self.ndt_wide.val() >> self.sh_low.val();
 
-        // Operands of the next division (one carry chain at most: the high-speed test was
-        // registered when the request was taken).
+        // Operands of the next division (no carry chain: the high-speed test was registered
+        // when the request was taken, Nep − 1 and Ndt + 1 an edge after it).
+        self.nep_less_one.d.next = self.nep_wide.val() - self.p_one.val();
+        self.ndt_plus_one.d.next = self.ndt_wide.val() + self.p_one.val();
         self.num_sel.next = self.nep_wide.val();
         self.den_sel.next = self.ndt_wide.val();
         if self.phase.q.val() == self.ph_two.val() {
             if self.w_high.q.val() {
-                self.num_sel.next = self.nep_wide.val() - self.p_one.val();
+                self.num_sel.next = self.nep_less_one.q.val();
             } else {
-                self.den_sel.next = self.ndt_wide.val() + self.p_one.val();
+                self.den_sel.next = self.ndt_plus_one.q.val();
             }
         }
         if self.phase.q.val() == self.ph_three.val() {
@@ -455,27 +506,24 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             }
         }
 
-        // One restoring division step over two cycles: bring down the next numerator bit,
-        // subtract if 2R + b ≥ den. The subtraction is 2R + b + ~den + 1, whose carry out
-        // (read off the operands' and the sum's top bits) is "no borrow". The operands are
-        // registers held for the step's two cycles, so in the second the sum is theirs.
+        // One non-restoring division step over two cycles: bring down the next numerator
+        // bit, then subtract den if R ≥ 0 or add it if R < 0 (R's top bit, a register), so
+        // the new remainder is the sum itself, with no multiplexer behind the carry chain.
+        // Its sign is the quotient bit (module docs: Datapath). The operands are registers
+        // held for the step's two cycles, so in the second the sum is theirs.
         self.shifted.next = self.part_rem.q.val() << self.sh_one.val();
         if (self.num_shift.q.val() & self.p_msb.val()) != self.p_zero.val() {
             self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.p_one.val();
         }
+        self.rem_negative.next = (self.part_rem.q.val() & self.p_msb.val()) != self.p_zero.val();
         self.div_sub.a.next = self.shifted.val();
         self.div_sub.b.next = !self.den.q.val();
         self.div_sub.carry_in.next = true;
-        self.shifted_msb.next = (self.shifted.val() & self.p_msb.val()) != self.p_zero.val();
-        self.den_msb.next = (self.den.q.val() & self.p_msb.val()) != self.p_zero.val();
-        self.diff_msb.next = (self.div_sub.sum.val() & self.p_msb.val()) != self.p_zero.val();
-        self.fits.next = ((self.part_rem.q.val() & self.p_msb.val()) != self.p_zero.val())
-            | (self.shifted_msb.val() & !self.den_msb.val())
-            | ((self.shifted_msb.val() | !self.den_msb.val()) & !self.diff_msb.val());
-        self.next_rem.next = self.shifted.val();
-        if self.fits.val() {
-            self.next_rem.next = self.div_sub.sum.val();
+        if self.rem_negative.val() {
+            self.div_sub.b.next = self.den.q.val();
+            self.div_sub.carry_in.next = false;
         }
+        self.fits.next = (self.div_sub.sum.val() & self.p_msb.val()) == self.p_zero.val();
 
         // The multiplier's two accumulations, acc·2 + (operand if the bit of X is 1).
         self.x_bit.next = (self.mul_x.q.val() & self.p_x_msb.val()) != self.p_zero.val();
@@ -487,7 +535,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         self.mul_num.carry_in.next = false;
         if self.x_bit.val() {
             self.mul_den.b.next = self.ndt_wide.val();
-            if self.count.q.val() != self.count_mul_last.val() {
+            if !self.mul_last.q.val() {
                 self.mul_num.b.next = self.nep_wide.val();
             }
         }
@@ -587,6 +635,8 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.den.d.next = self.den_sel.val();
             self.quo.d.next = self.s_zero.val();
             self.count.d.next = self.count_first.val();
+            // S − 1 > F (N ≥ 8).
+            self.mul_last.d.next = false;
             self.state.d.next = self.st_step.val();
             if self.phase.q.val() == self.ph_one.val() {
                 self.mul_x.d.next = (self.nep_wide.val() << self.sh_one.val()) - self.p_one.val();
@@ -602,18 +652,19 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             }
         }
         if (self.state.q.val() == self.st_step.val()) & self.second.q.val() {
-            self.part_rem.d.next = self.next_rem.val();
+            self.part_rem.d.next = self.div_sub.sum.val();
             self.num_shift.d.next = self.num_shift.q.val() << self.sh_one.val();
             self.quo.d.next = self.quo.q.val() << self.sh_one.val();
             if self.fits.val() {
                 self.quo.d.next = (self.quo.q.val() << self.sh_one.val()) | self.s_one.val();
             }
             self.count.d.next = self.count.q.val() - self.count_one.val();
+            self.mul_last.d.next = self.count.q.val() == self.count_before_mul_last.val();
             if self.mul_on.q.val() {
                 self.mul_x.d.next = self.mul_x.q.val() << self.sh_one.val();
                 self.acc_num.d.next = self.mul_num.sum.val();
                 self.acc_den.d.next = self.mul_den.sum.val();
-                if self.count.q.val() == self.count_mul_last.val() {
+                if self.mul_last.q.val() {
                     self.mul_on.d.next = false;
                 }
             }

@@ -12,6 +12,11 @@
 //! takes is then a filtered sample of the real channels (the golden rule is in
 //! `golden::top::core`).
 //!
+//! The rule's "count ≥ max(L, 1)" is tested as "count ≥ L and count ≠ 0": two tests side
+//! by side, where the zero test of L in front of the comparison was in series with it (the
+//! critical path of `encspeed_wb` on one seed, from the core's registered L through the
+//! 16-bit comparison to `done`'s enable).
+//!
 //! Registers: a 2-bit count of the synchroniser edges (saturating at 2), a 16-bit count of
 //! the edges after them (saturating at 2^16 − 1, the longest filter), a `done` flag set
 //! when the hold rule first ends, so that raising `cfg_filter` later does not bring the hold
@@ -40,7 +45,8 @@ pub struct Startup {
     sync_edges: DFF<Bits<2>>,
     settle_edges: DFF<Bits<FB>>,
     done: DFF<Bit>,
-    filter_delay: Signal<Local, Bits<FB>>,
+    /// The edge count has reached max(L, 1).
+    reached: Signal<Local, Bit>,
     two: Constant<Bits<2>>,
     sync_one: Constant<Bits<2>>,
     zero: Constant<Bits<FB>>,
@@ -61,7 +67,7 @@ impl Default for Startup {
             sync_edges: Default::default(),
             settle_edges: Default::default(),
             done: Default::default(),
-            filter_delay: Default::default(),
+            reached: Default::default(),
             two: Constant::new(2.into()),
             sync_one: Constant::new(1.into()),
             zero: Constant::new(0.into()),
@@ -76,11 +82,10 @@ impl Logic for Startup {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, sync_edges, settle_edges, done, released);
-        // max(L, 1): a filter of 0 or 1 cycles delays a level by one edge.
-        self.filter_delay.next = self.cfg_filter.val();
-        if self.cfg_filter.val() == self.zero.val() {
-            self.filter_delay.next = self.one.val();
-        }
+        // count ≥ max(L, 1) (a filter of 0 or 1 cycles delays a level by one edge), as two
+        // tests side by side.
+        self.reached.next = (self.settle_edges.q.val() >= self.cfg_filter.val())
+            & (self.settle_edges.q.val() != self.zero.val());
         if self.sync_edges.q.val() != self.two.val() {
             self.sync_edges.d.next = self.sync_edges.q.val() + self.sync_one.val();
         } else if self.settle_edges.q.val() != self.max.val() {
@@ -88,9 +93,7 @@ impl Logic for Startup {
         }
         // The hold ends once for all: raising cfg_filter later does not bring it back.
         self.done.d.next = self.done.q.val();
-        if (self.sync_edges.q.val() == self.two.val())
-            & (self.settle_edges.q.val() >= self.filter_delay.val())
-        {
+        if (self.sync_edges.q.val() == self.two.val()) & self.reached.val() {
             self.done.d.next = true;
         }
         if self.reset.val() {
@@ -99,8 +102,7 @@ impl Logic for Startup {
             self.settle_edges.d.next = self.zero.val();
         }
         self.hold.next = !self.done.q.val()
-            & ((self.sync_edges.q.val() != self.two.val())
-                | (self.settle_edges.q.val() < self.filter_delay.val()));
+            & ((self.sync_edges.q.val() != self.two.val()) | !self.reached.val());
         // Registered: the filter-length comparison does not reach the resets of the decoder
         // and the counter in the same cycle. Combined with `reset` here rather than in the
         // core: logic of the core that read the hold and the value it drives `reset` with

@@ -171,7 +171,6 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     mode_reset: ModeReset,
     rst: Signal<Local, Bit>,
     front_reset: Signal<Local, Bit>,
-    first_step: Signal<Local, Bit>,
     step_counted: Signal<Local, Bit>,
     engine_reset: Signal<Local, Bit>,
     dt_eff: Signal<Local, Bits<N>>,
@@ -294,7 +293,6 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             mode_reset: Default::default(),
             rst: Default::default(),
             front_reset: Default::default(),
-            first_step: Default::default(),
             step_counted: Default::default(),
             engine_reset: Default::default(),
             dt_eff: Default::default(),
@@ -424,8 +422,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         // at that step, counted as its first pulse. The decoder finds it as a register (its
         // resets include every core reset, and no step passes its start-up hold), so the
         // estimator's reset is `rst` or one flip-flop.
-        self.first_step.next = self.decoder.first.val();
-        self.engine_reset.next = self.rst.val() | self.first_step.val();
+        self.engine_reset.next = self.rst.val() | self.decoder.first.val();
         self.step_counted.next = self.decoder.step.val() & !self.rst.val();
         if self.decoder.step.val() {
             self.last_dir.d.next = self.decoder.forward.val();
