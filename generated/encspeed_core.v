@@ -175,6 +175,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     reg  counter$reset;
     reg  counter$step;
     reg  counter$forward;
+    reg  counter$first;
     reg  counter$z;
     reg  [31:0] counter$limit;
     reg  [31:0] counter$limit_less_one;
@@ -277,6 +278,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
     reg  mt$reset;
     reg  mt$step;
     reg  mt$forward;
+    reg  mt$first;
     reg  [23:0] mt$cfg_dt;
     wire  [23:0] mt$m;
     wire  [23:0] mt$t;
@@ -423,6 +425,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         .reset(counter$reset),
         .step(counter$step),
         .forward(counter$forward),
+        .first(counter$first),
         .z(counter$z),
         .limit(counter$limit),
         .limit_less_one(counter$limit_less_one),
@@ -553,6 +556,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         .reset(mt$reset),
         .step(mt$step),
         .forward(mt$forward),
+        .first(mt$first),
         .cfg_dt(mt$cfg_dt),
         .m(mt$m),
         .t(mt$t),
@@ -740,6 +744,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         counter$reset = front_reset;
         counter$step = decoder$step;
         counter$forward = decoder$forward;
+        counter$first = decoder$first;
         counter$z = filter_z$level_out;
         counter$limit = limit;
         counter$limit_less_one = limit_less_one;
@@ -814,6 +819,7 @@ module encspeed_core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter
         pc$forward = decoder$forward;
         et$forward = decoder$forward;
         mt$forward = decoder$forward;
+        mt$first = decoder$first;
         pc$cfg_dt = dt_reg$q;
         mt$cfg_dt = dt_reg$q;
         et_have$d = ~engine_reset & (et_have$q | et$strobe);
@@ -2915,6 +2921,12 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
     reg  [40:0] round_add$b;
     reg  round_add$carry_in;
     wire  [40:0] round_add$sum;
+    reg  [40:0] inc_r0$d;
+    wire  [40:0] inc_r0$q;
+    reg  inc_r0$clock;
+    reg  [40:0] inc_r1$d;
+    wire  [40:0] inc_r1$q;
+    reg  inc_r1$clock;
     
     // Local signals
     reg  [48:0] nep_wide;
@@ -2926,7 +2938,10 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
     reg  fits;
     reg  x_bit;
     reg  [40:0] half;
-    reg  round_bit;
+    reg  [40:0] inc_base;
+    reg  [40:0] inc_plus;
+    reg  req_by_two;
+    reg  req_by_four;
     reg  by_two;
     reg  by_four;
     reg  [40:0] addend;
@@ -3129,6 +3144,16 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         .carry_in(round_add$carry_in),
         .sum(round_add$sum)
     );
+    encspeed_core$calc$inc_r0 inc_r0(
+        .d(inc_r0$d),
+        .q(inc_r0$q),
+        .clock(inc_r0$clock)
+    );
+    encspeed_core$calc$inc_r1 inc_r1(
+        .d(inc_r1$d),
+        .q(inc_r1$q),
+        .clock(inc_r1$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -3165,6 +3190,8 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         valid_reg$clock = clock;
         nep_less_one$clock = clock;
         ndt_plus_one$clock = clock;
+        inc_r0$clock = clock;
+        inc_r1$clock = clock;
         req_nep$d = req_nep$q;
         req_ndt$d = req_ndt$q;
         req_neg$d = req_neg$q;
@@ -3198,6 +3225,8 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
         valid_reg$d = valid_reg$q;
         nep_less_one$d = nep_less_one$q;
         ndt_plus_one$d = ndt_plus_one$q;
+        inc_r0$d = inc_r0$q;
+        inc_r1$d = inc_r1$q;
         div_sub$clock = clock;
         mul_den$clock = clock;
         mul_num$clock = clock;
@@ -3543,46 +3572,21 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
             end
         end
         half = quo$q >> sh_one;
-        round_bit = (quo$q & s_one) != s_zero;
         if (w_ndt_zero$q) begin
             half = s_max;
-            round_bit = 1'b0;
         end
         if (w_nep_zero$q) begin
             half = s_zero;
-            round_bit = 1'b0;
         end
         by_two = w_shift$q == m_one;
         by_four = (w_shift$q & m_two) != m_zero;
         addend = half;
-        increment = s_zero;
-        if (round_bit) begin
-            increment = s_one;
-        end
-        if (by_two) begin
-            increment = s_one;
-            if (round_bit) begin
-                increment = s_two;
-            end
-        end
-        if (by_four) begin
-            increment = s_two;
-            if (round_bit) begin
-                increment = s_three;
-            end
-        end
         if (w_neg$q) begin
             addend = ~half;
-            increment = s_one;
-            if (round_bit) begin
-                increment = s_zero;
-            end
-            if (by_four) begin
-                increment = s_two;
-                if (round_bit) begin
-                    increment = s_one;
-                end
-            end
+        end
+        increment = inc_r0$q;
+        if ((quo$q & s_one) != s_zero) begin
+            increment = inc_r1$q;
         end
         round_add$a = addend;
         round_add$b = increment;
@@ -3602,6 +3606,29 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
                 rounded = (sum >> sh_two) | s_fill_two;
             end
         end
+        req_by_two = req_shift$q == m_one;
+        req_by_four = (req_shift$q & m_two) != m_zero;
+        inc_base = s_zero;
+        inc_plus = s_one;
+        if (req_by_two) begin
+            inc_base = s_one;
+            inc_plus = s_two;
+        end
+        if (req_by_four) begin
+            inc_base = s_two;
+            inc_plus = s_three;
+        end
+        if (req_neg$q) begin
+            inc_base = s_one;
+            inc_plus = s_zero;
+            if (req_by_four) begin
+                inc_base = s_two;
+                inc_plus = s_one;
+            end
+        end
+        if ((req_nep$q == n_zero) | (req_ndt$q == n_zero)) begin
+            inc_plus = inc_base;
+        end
         valid_reg$d = 1'b0;
         if ((state$q == st_idle) & pending$q) begin
             w_nep$d = req_nep$q;
@@ -3609,6 +3636,8 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1
             w_high$d = req_ndt$q <= (req_nep$q >> sh_one);
             w_neg$d = req_neg$q;
             w_shift$d = req_shift$q;
+            inc_r0$d = inc_base;
+            inc_r1$d = inc_plus;
             w_nep_zero$d = req_nep$q == n_zero;
             w_ndt_zero$d = req_ndt$q == n_zero;
             pending$d = 1'b0;
@@ -3912,6 +3941,44 @@ module encspeed_core$calc$div_sub$low(d,q,clock);
     end
           
 endmodule // encspeed_core$calc$div_sub$low
+
+
+module encspeed_core$calc$inc_r0(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$inc_r0
+
+
+module encspeed_core$calc$inc_r1(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$inc_r1
 
 
 module encspeed_core$calc$mul_den(clock,a,b,carry_in,sum);
@@ -4901,13 +4968,14 @@ module encspeed_core$cfg_error_reg(d,q,clock);
 endmodule // encspeed_core$cfg_error_reg
 
 
-module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg_z_mode,position,z_latch,index,rev_error,rev_error_count,rev_fault);
+module encspeed_core$counter(clock,reset,step,forward,first,z,limit,limit_less_one,cfg_z_mode,position,z_latch,index,rev_error,rev_error_count,rev_fault);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  step;
     input wire  forward;
+    input wire  first;
     input wire  z;
     input wire  [31:0] limit;
     input wire  [31:0] limit_less_one;
@@ -4974,9 +5042,6 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
     reg  rev_over$d;
     wire  rev_over$q;
     reg  rev_over$clock;
-    reg  rev_fwd$d;
-    wire  rev_fwd$q;
-    reg  rev_fwd$clock;
     reg  rev_mixed$d;
     wire  rev_mixed$q;
     reg  rev_mixed$clock;
@@ -4993,10 +5058,16 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
     // Local signals
     reg  count_is_rev;
     reg  [31:0] stepped;
-    reg  stepped_not_zero;
-    reg  stepped_at_limit;
-    reg  stepped_low_all_ones;
-    reg  stepped_low_not_zero;
+    reg  [31:0] up;
+    reg  up_not_zero;
+    reg  up_at_limit;
+    reg  up_low_all_ones;
+    reg  up_low_not_zero;
+    reg  [31:0] down;
+    reg  down_not_zero;
+    reg  down_at_limit;
+    reg  down_low_all_ones;
+    reg  down_low_not_zero;
     reg  [31:0] plus_one;
     reg  [31:0] minus_one;
     reg  [31:0] low;
@@ -5008,7 +5079,6 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
     reg  any_now;
     reg  [31:0] more_now;
     reg  over_now;
-    reg  fwd_now;
     reg  mixed_now;
     reg  bad;
     
@@ -5078,11 +5148,6 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
         .q(rev_over$q),
         .clock(rev_over$clock)
     );
-    encspeed_core$counter$rev_fwd rev_fwd(
-        .d(rev_fwd$d),
-        .q(rev_fwd$q),
-        .clock(rev_fwd$clock)
-    );
     encspeed_core$counter$rev_mixed rev_mixed(
         .d(rev_mixed$d),
         .q(rev_mixed$q),
@@ -5119,7 +5184,6 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
         rev_any$clock = clock;
         rev_more$clock = clock;
         rev_over$clock = clock;
-        rev_fwd$clock = clock;
         rev_mixed$clock = clock;
         error_reg$clock = clock;
         error_count$clock = clock;
@@ -5137,7 +5201,6 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
         rev_any$d = rev_any$q;
         rev_more$d = rev_more$q;
         rev_over$d = rev_over$q;
-        rev_fwd$d = rev_fwd$q;
         rev_mixed$d = rev_mixed$q;
         error_reg$d = error_reg$q;
         error_count$d = error_count$q;
@@ -5158,47 +5221,42 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
         end
         limit_low_all_ones = (limit & low_mask) == low_mask;
         limit_low_zero = (limit & low_mask) == pos_zero;
-        stepped = position_reg$q;
-        stepped_not_zero = not_zero$q;
-        stepped_at_limit = at_limit$q;
-        stepped_low_all_ones = low_all_ones$q;
-        stepped_low_not_zero = low_not_zero$q;
-        if (step & forward) begin
-            if (at_limit$q) begin
-                stepped = pos_zero;
-                stepped_not_zero = 1'b0;
-                stepped_at_limit = single;
-                stepped_low_all_ones = 1'b0;
-                stepped_low_not_zero = 1'b0;
-            end
-            else begin
-                stepped = plus_one;
-                stepped_not_zero = 1'b1;
-                stepped_at_limit = position_reg$q == limit_less_one;
-                stepped_low_all_ones = low == low_max_less_one;
-                stepped_low_not_zero = ~low_all_ones$q;
-            end
+        up = plus_one;
+        up_not_zero = 1'b1;
+        up_at_limit = position_reg$q == limit_less_one;
+        up_low_all_ones = low == low_max_less_one;
+        up_low_not_zero = ~low_all_ones$q;
+        if (at_limit$q) begin
+            up = pos_zero;
+            up_not_zero = 1'b0;
+            up_at_limit = single;
+            up_low_all_ones = 1'b0;
+            up_low_not_zero = 1'b0;
         end
-        if (step & ~forward) begin
-            if (~not_zero$q) begin
-                stepped = limit;
-                stepped_not_zero = ~single;
-                stepped_at_limit = 1'b1;
-                stepped_low_all_ones = limit_low_all_ones;
-                stepped_low_not_zero = ~limit_low_zero;
+        down = minus_one;
+        down_not_zero = position_reg$q != pos_one;
+        down_at_limit = 1'b0;
+        down_low_all_ones = ~low_not_zero$q;
+        down_low_not_zero = low != pos_one;
+        if (~not_zero$q) begin
+            down = limit;
+            down_not_zero = ~single;
+            down_at_limit = 1'b1;
+            down_low_all_ones = limit_low_all_ones;
+            down_low_not_zero = ~limit_low_zero;
+        end
+        stepped = position_reg$q;
+        if (step) begin
+            if (forward) begin
+                stepped = up;
             end
             else begin
-                stepped = minus_one;
-                stepped_not_zero = position_reg$q != pos_one;
-                stepped_at_limit = 1'b0;
-                stepped_low_all_ones = ~low_not_zero$q;
-                stepped_low_not_zero = low != pos_one;
+                stepped = down;
             end
         end
         any_now = rev_any$q;
         more_now = rev_more$q;
         over_now = rev_over$q;
-        fwd_now = rev_fwd$q;
         mixed_now = rev_mixed$q;
         if (step) begin
             if (rev_any$q) begin
@@ -5208,7 +5266,7 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
                 else begin
                     more_now = rev_more$q + pos_one;
                 end
-                if (forward ^ rev_fwd$q) begin
+                if (first) begin
                     mixed_now = 1'b1;
                 end
             end
@@ -5216,7 +5274,6 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
                 any_now = 1'b1;
                 more_now = pos_zero;
                 over_now = 1'b0;
-                fwd_now = forward;
                 mixed_now = 1'b0;
             end
         end
@@ -5232,17 +5289,27 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
             end
         end
         bad = armed$q & (cfg_z_mode != mode_ignore) & any_now & ~mixed_now & (over_now | ~count_is_rev);
-        position_reg$d = stepped;
-        not_zero$d = stepped_not_zero;
-        at_limit$d = stepped_at_limit;
-        low_all_ones$d = stepped_low_all_ones;
-        low_not_zero$d = stepped_low_not_zero;
+        if (step) begin
+            if (forward) begin
+                position_reg$d = up;
+                not_zero$d = up_not_zero;
+                at_limit$d = up_at_limit;
+                low_all_ones$d = up_low_all_ones;
+                low_not_zero$d = up_low_not_zero;
+            end
+            else begin
+                position_reg$d = down;
+                not_zero$d = down_not_zero;
+                at_limit$d = down_at_limit;
+                low_all_ones$d = down_low_all_ones;
+                low_not_zero$d = down_low_not_zero;
+            end
+        end
         index_reg$d = rise;
         fault_reg$d = 1'b0;
         rev_any$d = any_now;
         rev_more$d = more_now;
         rev_over$d = over_now;
-        rev_fwd$d = fwd_now;
         rev_mixed$d = mixed_now;
         if (rise) begin
             if ((cfg_z_mode == mode_latch) | (cfg_z_mode == mode_both)) begin
@@ -5282,7 +5349,6 @@ module encspeed_core$counter(clock,reset,step,forward,z,limit,limit_less_one,cfg
             rev_any$d = 1'b0;
             rev_more$d = pos_zero;
             rev_over$d = 1'b0;
-            rev_fwd$d = 1'b0;
             rev_mixed$d = 1'b0;
             error_reg$d = 1'b0;
             error_count$d = count_zero;
@@ -5525,25 +5591,6 @@ module encspeed_core$counter$rev_any(d,q,clock);
     end
           
 endmodule // encspeed_core$counter$rev_any
-
-
-module encspeed_core$counter$rev_fwd(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_core$counter$rev_fwd
 
 
 module encspeed_core$counter$rev_mixed(d,q,clock);
@@ -7488,13 +7535,14 @@ module encspeed_core$mode_reset$mode_reg(d,q,clock);
 endmodule // encspeed_core$mode_reset$mode_reg
 
 
-module encspeed_core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,stalled);
+module encspeed_core$mt(clock,reset,step,forward,first,cfg_dt,m,t,negative,strobe,stalled);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  step;
     input wire  forward;
+    input wire  first;
     input wire  [23:0] cfg_dt;
     output reg  [23:0] m;
     output reg  [23:0] t;
@@ -7671,7 +7719,7 @@ module encspeed_core$mt(clock,reset,step,forward,cfg_dt,m,t,negative,strobe,stal
         if (last$q == max) begin
             last_inc = max;
         end
-        rev = step & have_dir$q & (forward ^ dir$q);
+        rev = first & have_dir$q;
         cont = step & ~rev;
         m_now = m_count$q;
         span_now = span$q;
@@ -8876,6 +8924,7 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
     localparam  zero = 24'h0;
     localparam  one = 24'h1;
     localparam  saturated = 24'hffffff;
+    localparam  saturated_less_one = 24'hfffffe;
     
     // Stub signals
     reg  wrote_nep_reg$d;
@@ -8887,6 +8936,12 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
     reg  [23:0] cep$d;
     wire  [23:0] cep$q;
     reg  cep$clock;
+    reg  cep_nonzero$d;
+    wire  cep_nonzero$q;
+    reg  cep_nonzero$clock;
+    reg  cep_saturated$d;
+    wire  cep_saturated$q;
+    reg  cep_saturated$clock;
     reg  [23:0] nep1$d;
     wire  [23:0] nep1$q;
     reg  nep1$clock;
@@ -8919,6 +8974,16 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
         .q(cep$q),
         .clock(cep$clock)
     );
+    encspeed_core$table1$cep_nonzero cep_nonzero(
+        .d(cep_nonzero$d),
+        .q(cep_nonzero$q),
+        .clock(cep_nonzero$clock)
+    );
+    encspeed_core$table1$cep_saturated cep_saturated(
+        .d(cep_saturated$d),
+        .q(cep_saturated$q),
+        .clock(cep_saturated$clock)
+    );
     encspeed_core$table1$nep1 nep1(
         .d(nep1$d),
         .q(nep1$q),
@@ -8943,6 +9008,8 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
     // Update code
     always @(*) begin
         cep$clock = clock;
+        cep_nonzero$clock = clock;
+        cep_saturated$clock = clock;
         nep1$clock = clock;
         ndt1$clock = clock;
         update_reg$clock = clock;
@@ -8950,24 +9017,30 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
         wrote_nep_reg$clock = clock;
         restarted_reg$clock = clock;
         cep$d = cep$q;
+        cep_nonzero$d = cep_nonzero$q;
+        cep_saturated$d = cep_saturated$q;
         nep1$d = nep1$q;
         ndt1$d = ndt1$q;
         update_reg$d = update_reg$q;
         primed_reg$d = primed_reg$q;
         wrote_nep_reg$d = wrote_nep_reg$q;
         restarted_reg$d = restarted_reg$q;
-        nep_write = tick & (cep$q != zero);
+        nep_write = tick & cep_nonzero$q;
         if (nep_write) begin
             nep1$d = cep$q;
         end
         if (restart) begin
             ndt1$d = cdt;
         end
-        if (lep & (cep$q != saturated)) begin
+        if (lep & ~cep_saturated$q) begin
             cep$d = cep$q + one;
+            cep_nonzero$d = 1'b1;
+            cep_saturated$d = cep$q == saturated_less_one;
         end
         if (tick) begin
             cep$d = zero;
+            cep_nonzero$d = 1'b0;
+            cep_saturated$d = 1'b0;
         end
         update_reg$d = nep_write | restart;
         wrote_nep_reg$d = nep_write;
@@ -8976,8 +9049,12 @@ module encspeed_core$table1(clock,reset,lep,tick,restart,cdt,nep,ndt,update,prim
         if (reset) begin
             primed_reg$d = 1'b0;
             cep$d = zero;
+            cep_nonzero$d = 1'b0;
+            cep_saturated$d = 1'b0;
             if (lep) begin
                 cep$d = one;
+                cep_nonzero$d = 1'b1;
+                cep_saturated$d = one == saturated;
             end
             nep1$d = zero;
             ndt1$d = one;
@@ -9013,6 +9090,44 @@ module encspeed_core$table1$cep(d,q,clock);
     end
           
 endmodule // encspeed_core$table1$cep
+
+
+module encspeed_core$table1$cep_nonzero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$table1$cep_nonzero
+
+
+module encspeed_core$table1$cep_saturated(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$table1$cep_saturated
 
 
 module encspeed_core$table1$ndt1(d,q,clock);

@@ -8,7 +8,11 @@
 //! Per clock edge (N = counter width, 2..=32, max = 2^N − 1, x⁺ = min(x + 1, max)):
 //! - time base: [`WindowTimer`](crate::baselines::window_timer::WindowTimer), as in
 //!   [`crate::PcCounter`] (registered `tick`; a change of `cfg_dt` acts one edge later);
-//! - rev = step of the other direction than the last step (a reversal); cont = step ∧ ¬rev;
+//! - rev = step of the other direction than the last step (a reversal), found as
+//!   `first` ∧ (a step since reset): the decoder's registered `first` (the first step since
+//!   reset, or a reversal) instead of a comparison of `forward` with the last direction here,
+//!   which put the decoder's `forward` four logic levels from `anchored`'s enable (a
+//!   critical path of the Wishbone top on the iCE40); cont = step ∧ ¬rev;
 //! - the measurement including this edge: m' = cont ? m⁺ : m, span' = cont ? a⁺ : span,
 //!   l' = cont ? 0 : l⁺ (a = cycles since the anchor, l = cycles since the last step);
 //! - on a tick, if anchored: `strobe`, `m` ← m', `t` ← (m' ≠ 0 ? span' : l'),
@@ -18,7 +22,10 @@
 //!   after the tick of the same edge: no m ever mixes directions;
 //! - `stalled` = (l = max).
 //!
-//! Ports: `clock`, `reset` (synchronous, active high), `step`, `forward`, `cfg_dt[N-1:0]`.
+//! Ports: `clock`, `reset` (synchronous, active high), `step`, `forward`, `first`,
+//! `cfg_dt[N-1:0]`. `first` must be the decoder's: high with `step` when no step has been
+//! made since this block's reset or the step is against the last one (the core resets the
+//! decoder whenever it resets this block, and no step passes between).
 //! Registered outputs: `m[N-1:0]`, `t[N-1:0]` (cycles), `negative`, `strobe`, `stalled`.
 //! Latency: the window's result is published by its closing tick edge. A window holds the
 //! steps of the edges (tick, next tick]. Reset clears every register.
@@ -36,6 +43,8 @@ pub struct MtCounter<const N: usize> {
     pub step: Signal<In, Bit>,
     /// The step is forward.
     pub forward: Signal<In, Bit>,
+    /// With `step`: the first step since reset, or a step against the last one.
+    pub first: Signal<In, Bit>,
     /// Window length, clock cycles (0 counts as 1), used from the next cycle on.
     pub cfg_dt: Signal<In, Bits<N>>,
     /// Steps in the measurement (0: none since the anchor).
@@ -89,6 +98,7 @@ impl<const N: usize> Default for MtCounter<N> {
             reset: Default::default(),
             step: Default::default(),
             forward: Default::default(),
+            first: Default::default(),
             cfg_dt: Default::default(),
             m: Default::default(),
             t: Default::default(),
@@ -150,8 +160,7 @@ impl<const N: usize> Logic for MtCounter<N> {
             self.last_inc.next = self.max.val();
         }
         // The measurement including this edge (a reversing step is not part of it).
-        self.rev.next =
-            self.step.val() & self.have_dir.q.val() & (self.forward.val() ^ self.dir.q.val());
+        self.rev.next = self.first.val() & self.have_dir.q.val();
         self.cont.next = self.step.val() & !self.rev.val();
         self.m_now.next = self.m_count.q.val();
         self.span_now.next = self.span.q.val();

@@ -110,19 +110,24 @@
 //! negate, a rounding add and a negate, on its critical path). The positive sum stays
 //! below 2^S (m ≤ 2^(N+F) − 1, e ≤ 3), so its shift fills zeros; a negative request fills
 //! ones when the sum's top bit is set (a sum of 0 or 1 is a speed that rounds to 0).
+//! e and f for r = 0 and for r = 1 depend only on the request (its mode shift, sign and
+//! special cases), so both are registered when the request is taken and r alone picks
+//! one: the rounding adder is one logic level behind the quotient register (three before,
+//! on a near-critical path of `encspeed_wb` on the iCE40).
 //!
 //! # Resources
 //!
 //! Registers: the request (2N + 4), its working copy (2N + 6), Nep − 1 and Ndt + 1 (2P, of
 //! which yosys keeps about 2N + 2: the high bits of Ndt + 1 are constant), the divider
 //! (3P + S), the multiplier (3P), staging and outputs (5S), a 6-bit step counter, 10
-//! control bits, and in the four two-cycle adders the low sums and the high operands
+//! control bits, the rounding increment for r = 0 and 1 (2 × 2 bits), and in the four two-cycle adders the low sums and the high operands
 //! (about 2P each for the divider and the multiplier, 2S for the rounding). For N = 24,
 //! F = 16, yosys 0.23 `synth_ice40` maps the block (as it sits in the generated
-//! `encspeed_core`) to 877 flip-flops, 918 LUT4 and 278 carry cells (826, 914 and 282
+//! `encspeed_core`) to 880 flip-flops, 924 LUT4 and 278 carry cells (826, 914 and 282
 //! with the restoring divider and n2's operands formed at the set-up; 608, 867 and 278
-//! with one-cycle 49- and 41-bit additions). The split took the block off the critical path of `encspeed_wb` on the
-//! iCE40 HX8K: before, the divider's 49-bit trial subtraction was 10.5 ns of an 18 ns path
+//! with one-cycle 49- and 41-bit additions). The split took the block off the critical
+//! path of `encspeed_wb` on the iCE40 HX8K: before, the divider's 49-bit trial
+//! subtraction was 10.5 ns of an 18 ns path
 //! (docs/design-decisions.md, "Timing closure on the iCE40").
 
 use rust_hdl::prelude::*;
@@ -223,7 +228,8 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     /// Nep − 1 and Ndt + 1 at P bits, registered at every edge from the working copy
     /// (steady from the request's take to the second set-up, which reads them): the
     /// operands of n2 come out of a multiplexer, with no carry chain in front of the
-    /// divider's registers.
+    /// divider's registers. (One register chosen by the high-speed test would save about
+    /// N + 1 flip-flops but cost a P-bit multiplexer: about 50 LUT4 more.)
     nep_less_one: DFF<Bits<P>>,
     ndt_plus_one: DFF<Bits<P>>,
     num_sel: Signal<Local, Bits<P>>,
@@ -245,8 +251,15 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     round_add: crate::arith::two_cycle_adder::TwoCycleAdder<S>,
     /// Quotient >> 1 (or a special value).
     half: Signal<Local, Bits<S>>,
-    /// Quotient bit 0: the rounding increment.
-    round_bit: Signal<Local, Bit>,
+    /// The rounding adder's small operand for a last quotient bit r = 0 and r = 1,
+    /// registered when the request is taken (module docs: Rounding).
+    inc_r0: DFF<Bits<S>>,
+    inc_r1: DFF<Bits<S>>,
+    inc_base: Signal<Local, Bits<S>>,
+    inc_plus: Signal<Local, Bits<S>>,
+    /// The request's mode shift is 1 / is 2 or 3.
+    req_by_two: Signal<Local, Bit>,
+    req_by_four: Signal<Local, Bit>,
     /// Mode scaling by 2 (s = 1) or by 4 (s = 2).
     by_two: Signal<Local, Bit>,
     by_four: Signal<Local, Bit>,
@@ -374,7 +387,12 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             mul_num: Default::default(),
             round_add: Default::default(),
             half: Default::default(),
-            round_bit: Default::default(),
+            inc_r0: Default::default(),
+            inc_r1: Default::default(),
+            inc_base: Default::default(),
+            inc_plus: Default::default(),
+            req_by_two: Default::default(),
+            req_by_four: Default::default(),
             by_two: Default::default(),
             by_four: Default::default(),
             addend: Default::default(),
@@ -461,7 +479,9 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             out_n3,
             valid_reg,
             nep_less_one,
-            ndt_plus_one
+            ndt_plus_one,
+            inc_r0,
+            inc_r1
         );
         clock!(self, clock, div_sub, mul_den, mul_num, round_add);
         // Widen the working Nep and Ndt to P bits: shift their bits in at the top, LSB
@@ -545,48 +565,23 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         // the special cases replace h and r (Ndt = 0: h = 2^(N+F) − 1, r = 0; Nep = 0:
         // h = 0, r = 0).
         self.half.next = self.quo.q.val() >> self.sh_one.val();
-        self.round_bit.next = (self.quo.q.val() & self.s_one.val()) != self.s_zero.val();
         if self.w_ndt_zero.q.val() {
             self.half.next = self.s_max.val();
-            self.round_bit.next = false;
         }
         if self.w_nep_zero.q.val() {
             self.half.next = self.s_zero.val();
-            self.round_bit.next = false;
         }
         self.by_two.next = self.w_shift.q.val() == self.m_one.val();
         self.by_four.next = (self.w_shift.q.val() & self.m_two.val()) != self.m_zero.val();
         self.addend.next = self.half.val();
-        // e = r (+1 in x2, +2 in x4).
-        self.increment.next = self.s_zero.val();
-        if self.round_bit.val() {
-            self.increment.next = self.s_one.val();
-        }
-        if self.by_two.val() {
-            self.increment.next = self.s_one.val();
-            if self.round_bit.val() {
-                self.increment.next = self.s_two.val();
-            }
-        }
-        if self.by_four.val() {
-            self.increment.next = self.s_two.val();
-            if self.round_bit.val() {
-                self.increment.next = self.s_three.val();
-            }
-        }
         if self.w_neg.q.val() {
             self.addend.next = !self.half.val();
-            // f = 1 − r (2 − r in x4).
-            self.increment.next = self.s_one.val();
-            if self.round_bit.val() {
-                self.increment.next = self.s_zero.val();
-            }
-            if self.by_four.val() {
-                self.increment.next = self.s_two.val();
-                if self.round_bit.val() {
-                    self.increment.next = self.s_one.val();
-                }
-            }
+        }
+        // e or f for r = 0 and r = 1 were registered when the request was taken: only r,
+        // the quotient's bit 0, chooses here, one logic level in front of the adder.
+        self.increment.next = self.inc_r0.q.val();
+        if (self.quo.q.val() & self.s_one.val()) != self.s_zero.val() {
+            self.increment.next = self.inc_r1.q.val();
         }
         self.round_add.a.next = self.addend.val();
         self.round_add.b.next = self.increment.val();
@@ -608,6 +603,35 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             }
         }
 
+        // The rounding adder's small operand for r = 0 (`inc_base`) and r = 1 (`inc_plus`),
+        // registered when the request is taken: e = r (+1 in x2, +2 in x4), or for a
+        // negative request f = 1 − r (2 − r in x4); the special cases (Nep = 0, Ndt = 0)
+        // force r = 0.
+        self.req_by_two.next = self.req_shift.q.val() == self.m_one.val();
+        self.req_by_four.next = (self.req_shift.q.val() & self.m_two.val()) != self.m_zero.val();
+        self.inc_base.next = self.s_zero.val();
+        self.inc_plus.next = self.s_one.val();
+        if self.req_by_two.val() {
+            self.inc_base.next = self.s_one.val();
+            self.inc_plus.next = self.s_two.val();
+        }
+        if self.req_by_four.val() {
+            self.inc_base.next = self.s_two.val();
+            self.inc_plus.next = self.s_three.val();
+        }
+        if self.req_neg.q.val() {
+            self.inc_base.next = self.s_one.val();
+            self.inc_plus.next = self.s_zero.val();
+            if self.req_by_four.val() {
+                self.inc_base.next = self.s_two.val();
+                self.inc_plus.next = self.s_one.val();
+            }
+        }
+        if (self.req_nep.q.val() == self.n_zero.val()) | (self.req_ndt.q.val() == self.n_zero.val())
+        {
+            self.inc_plus.next = self.inc_base.val();
+        }
+
         self.valid_reg.d.next = false;
         if (self.state.q.val() == self.st_idle.val()) & self.pending.q.val() {
             self.w_nep.d.next = self.req_nep.q.val();
@@ -617,6 +641,8 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
                 self.req_ndt.q.val() <= (self.req_nep.q.val() >> self.sh_one.val());
             self.w_neg.d.next = self.req_neg.q.val();
             self.w_shift.d.next = self.req_shift.q.val();
+            self.inc_r0.d.next = self.inc_base.val();
+            self.inc_r1.d.next = self.inc_plus.val();
             self.w_nep_zero.d.next = self.req_nep.q.val() == self.n_zero.val();
             self.w_ndt_zero.d.next = self.req_ndt.q.val() == self.n_zero.val();
             self.pending.d.next = false;

@@ -42,6 +42,11 @@ pub struct SyncEstimator<const N: usize> {
     restarted_reg: DFF<Bit>,
     nep_write: Signal<Local, Bit>,
     pub(crate) cep: DFF<Bits<N>>,
+    /// Cep ≠ 0, set with Cep: the tick's write and the count's enable do not wait for a
+    /// reduction of all N bits of Cep (it was a critical path of the Wishbone top).
+    cep_nonzero: DFF<Bit>,
+    /// Cep = 2^N − 1 (saturated), set with Cep.
+    cep_saturated: DFF<Bit>,
     nep1: DFF<Bits<N>>,
     ndt1: DFF<Bits<N>>,
     update_reg: DFF<Bit>,
@@ -49,6 +54,8 @@ pub struct SyncEstimator<const N: usize> {
     zero: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
     saturated: Constant<Bits<N>>,
+    /// 2^N − 2: an increment from here saturates.
+    saturated_less_one: Constant<Bits<N>>,
 }
 
 impl<const N: usize> Default for SyncEstimator<N> {
@@ -65,6 +72,8 @@ impl<const N: usize> Default for SyncEstimator<N> {
             update: Default::default(),
             primed: Default::default(),
             cep: Default::default(),
+            cep_nonzero: Default::default(),
+            cep_saturated: Default::default(),
             nep1: Default::default(),
             ndt1: Default::default(),
             update_reg: Default::default(),
@@ -77,6 +86,7 @@ impl<const N: usize> Default for SyncEstimator<N> {
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
             saturated: Constant::new(((1u64 << N) - 1).into()),
+            saturated_less_one: Constant::new(((1u64 << N) - 2).into()),
         }
     }
 }
@@ -88,6 +98,8 @@ impl<const N: usize> Logic for SyncEstimator<N> {
             self,
             clock,
             cep,
+            cep_nonzero,
+            cep_saturated,
             nep1,
             ndt1,
             update_reg,
@@ -95,7 +107,7 @@ impl<const N: usize> Logic for SyncEstimator<N> {
             wrote_nep_reg,
             restarted_reg
         );
-        self.nep_write.next = self.tick.val() & (self.cep.q.val() != self.zero.val());
+        self.nep_write.next = self.tick.val() & self.cep_nonzero.q.val();
         if self.nep_write.val() {
             self.nep1.d.next = self.cep.q.val();
         }
@@ -103,11 +115,15 @@ impl<const N: usize> Logic for SyncEstimator<N> {
             self.ndt1.d.next = self.cdt.val();
         }
         // Line 10-11 (saturating), then line 13.
-        if self.lep.val() & (self.cep.q.val() != self.saturated.val()) {
+        if self.lep.val() & !self.cep_saturated.q.val() {
             self.cep.d.next = self.cep.q.val() + self.one.val();
+            self.cep_nonzero.d.next = true;
+            self.cep_saturated.d.next = self.cep.q.val() == self.saturated_less_one.val();
         }
         if self.tick.val() {
             self.cep.d.next = self.zero.val();
+            self.cep_nonzero.d.next = false;
+            self.cep_saturated.d.next = false;
         }
         self.update_reg.d.next = self.nep_write.val() | self.restart.val();
         self.wrote_nep_reg.d.next = self.nep_write.val();
@@ -119,8 +135,13 @@ impl<const N: usize> Logic for SyncEstimator<N> {
             // as a restart would): the window starts at a pulse.
             self.primed_reg.d.next = false;
             self.cep.d.next = self.zero.val();
+            self.cep_nonzero.d.next = false;
+            self.cep_saturated.d.next = false;
             if self.lep.val() {
                 self.cep.d.next = self.one.val();
+                self.cep_nonzero.d.next = true;
+                // N = 1: Cep = 1 is already saturated.
+                self.cep_saturated.d.next = self.one.val() == self.saturated.val();
             }
             self.nep1.d.next = self.zero.val();
             self.ndt1.d.next = self.one.val();
@@ -140,6 +161,60 @@ impl<const N: usize> Logic for SyncEstimator<N> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// One clock edge with (reset, lep, tick); returns (Cep, Nep1, update) after it.
+    fn edge<const N: usize>(
+        uut: &mut SyncEstimator<N>,
+        reset: bool,
+        lep: bool,
+        tick: bool,
+    ) -> (u64, u64, bool) {
+        uut.reset.next = reset;
+        uut.lep.next = lep;
+        uut.tick.next = tick;
+        uut.restart.next = false;
+        uut.cdt.next = 0.into();
+        uut.clock.next = Clock { clk: false };
+        assert!(simulate(uut, 100));
+        uut.clock.next = Clock { clk: true };
+        assert!(simulate(uut, 100));
+        (
+            uut.cep.q.val().to_u64(),
+            uut.nep.val().to_u64(),
+            uut.update.val(),
+        )
+    }
+
+    /// Cep saturates at 2^N − 1 and a tick writes Nep1 only when Cep ≠ 0 (Table 1 lines
+    /// 8-13), with the flags kept beside Cep: worked by hand for N = 1 and N = 2.
+    #[test]
+    fn cep_saturates_and_a_tick_writes_only_a_count() {
+        let mut two = SyncEstimator::<2>::default();
+        two.connect_all();
+        assert_eq!(edge(&mut two, true, false, false), (0, 0, false));
+        let counts: Vec<u64> = (0..5)
+            .map(|_| edge(&mut two, false, true, false).0)
+            .collect();
+        assert_eq!(counts, [1, 2, 3, 3, 3]);
+        // The tick writes Nep1 = 3 (update the cycle after) and clears Cep.
+        assert_eq!(edge(&mut two, false, false, true), (0, 3, true));
+        // A tick with Cep = 0 writes nothing.
+        assert_eq!(edge(&mut two, false, false, true), (0, 3, false));
+        // A pulse with the tick is counted and cleared with Cep (lines 10-13).
+        assert_eq!(edge(&mut two, false, true, false), (1, 3, false));
+        assert_eq!(edge(&mut two, false, true, true), (0, 1, true));
+        // A pulse in the reset cycle starts the count at 1.
+        assert_eq!(edge(&mut two, true, true, false), (1, 0, false));
+        assert_eq!(edge(&mut two, false, false, true), (0, 1, true));
+
+        let mut one = SyncEstimator::<1>::default();
+        one.connect_all();
+        assert_eq!(edge(&mut one, true, true, false), (1, 0, false));
+        assert_eq!(edge(&mut one, false, true, false), (1, 0, false));
+        assert_eq!(edge(&mut one, false, false, true), (0, 1, true));
+        assert_eq!(edge(&mut one, false, true, false), (1, 1, false));
+        assert_eq!(edge(&mut one, false, true, false), (1, 1, false));
+    }
 
     #[test]
     fn synthesises() {

@@ -21,12 +21,20 @@
 //!    and the high bits plus the carry or minus the borrow of the low half, which are two
 //!    more registered flags (low half all ones, low half 0) set the same way. A 32-bit
 //!    chain from a register that fans out across the core was the slowest path of the
-//!    core on the iCE40.
+//!    core on the iCE40. The positions after a forward and after a backward step, and
+//!    their flags, are formed from registers only; the decoder's step and direction then
+//!    enable the registers and pick one of the two (when the step was one input of a
+//!    multiplexer tree shared with the index latch, the decoder's registers were five
+//!    logic levels from the position register, the core's critical path).
 //! 3. On rise: `cfg_z_mode` 2 or 3 latches p (this edge's step included) into `z_latch`;
 //!    `cfg_z_mode` 1 or 3 sets the position to 0 instead of p; `index` is high after the edge.
 //! 4. Revolution check. The steps since the last index edge are counted (saturating one
-//!    past 2^C: a C-bit count of steps − 1 and an overflow bit) with the direction of the
-//!    first and a "mixed" bit; the step of an index edge's cycle belongs to the interval that
+//!    past 2^C: a C-bit count of steps − 1 and an overflow bit) and a "mixed" bit, set by a
+//!    step that is the decoder's `first` (a reversal) after an earlier step of the
+//!    interval: a step against the interval's first direction makes one, and the decoder's
+//!    register stands in for a comparison of `forward` with the first direction, which put
+//!    the decoder's `forward` five logic levels from the error counter's enable (a critical
+//!    path of `encspeed_wb`). The step of an index edge's cycle belongs to the interval that
 //!    edge closes. At a rise after an earlier one (`armed`), with `cfg_z_mode` ≠ 0, an
 //!    interval with steps of one direction only whose count is not R sets `rev_error`
 //!    (sticky) and increments `rev_error_count` (saturating). An interval with a reversal is
@@ -34,7 +42,9 @@
 //!    noise at rest); for a fault-free encoder a one-direction interval always has exactly
 //!    R steps, because the index rises on entering the Z window from either side.
 //!
-//! Ports: `step`, `forward` (from the decoder), `z` (filtered index level, one cycle ahead
+//! Ports: `step`, `forward`, `first` (from the decoder: `first` is high with `step` when
+//! no step has been made since this block's reset or the step is against the last one; the
+//! core resets the decoder with this block), `z` (filtered index level, one cycle ahead
 //! of `step`), `limit[C-1:0]` (R − 1), `limit_less_one[C-1:0]` (R − 2), `cfg_z_mode[1:0]`
 //! (0 ignore, 1 reset, 2 latch, 3 latch then reset). Registered outputs: `position[C-1:0]`, `z_latch[C-1:0]`, `index`
 //! (one cycle per index edge processed), `rev_error` (sticky), `rev_error_count[G-1:0]`.
@@ -59,6 +69,8 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     pub step: Signal<In, Bit>,
     /// The step is forward.
     pub forward: Signal<In, Bit>,
+    /// With `step`: the first step since reset, or a step against the last one.
+    pub first: Signal<In, Bit>,
     /// Filtered index level, in the timing of the decoder's inputs.
     pub z: Signal<In, Bit>,
     /// R − 1 mod 2^C, R the counts per revolution (2^C − 1 for R = 2^C).
@@ -97,19 +109,26 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     rev_any: DFF<Bit>,
     rev_more: DFF<Bits<C>>,
     rev_over: DFF<Bit>,
-    rev_fwd: DFF<Bit>,
     rev_mixed: DFF<Bit>,
     error_reg: DFF<Bit>,
     error_count: DFF<Bits<G>>,
     fault_reg: DFF<Bit>,
     /// The interval's count equals R (more_now = limit), found without forming more_now.
     count_is_rev: Signal<Local, Bit>,
+    /// The position with this cycle's step (for the index latch).
     stepped: Signal<Local, Bits<C>>,
-    /// The flags of `stepped`.
-    stepped_not_zero: Signal<Local, Bit>,
-    stepped_at_limit: Signal<Local, Bit>,
-    stepped_low_all_ones: Signal<Local, Bit>,
-    stepped_low_not_zero: Signal<Local, Bit>,
+    /// The position after a forward step, and its flags.
+    up: Signal<Local, Bits<C>>,
+    up_not_zero: Signal<Local, Bit>,
+    up_at_limit: Signal<Local, Bit>,
+    up_low_all_ones: Signal<Local, Bit>,
+    up_low_not_zero: Signal<Local, Bit>,
+    /// The position after a backward step, and its flags.
+    down: Signal<Local, Bits<C>>,
+    down_not_zero: Signal<Local, Bit>,
+    down_at_limit: Signal<Local, Bit>,
+    down_low_all_ones: Signal<Local, Bit>,
+    down_low_not_zero: Signal<Local, Bit>,
     /// position + 1 and position − 1, each from two carry chains of half the width.
     plus_one: Signal<Local, Bits<C>>,
     minus_one: Signal<Local, Bits<C>>,
@@ -125,7 +144,6 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     any_now: Signal<Local, Bit>,
     more_now: Signal<Local, Bits<C>>,
     over_now: Signal<Local, Bit>,
-    fwd_now: Signal<Local, Bit>,
     mixed_now: Signal<Local, Bit>,
     bad: Signal<Local, Bit>,
     pos_zero: Constant<Bits<C>>,
@@ -160,6 +178,7 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             reset: Default::default(),
             step: Default::default(),
             forward: Default::default(),
+            first: Default::default(),
             z: Default::default(),
             limit: Default::default(),
             limit_less_one: Default::default(),
@@ -183,17 +202,22 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             rev_any: Default::default(),
             rev_more: Default::default(),
             rev_over: Default::default(),
-            rev_fwd: Default::default(),
             rev_mixed: Default::default(),
             error_reg: Default::default(),
             error_count: Default::default(),
             fault_reg: Default::default(),
             count_is_rev: Default::default(),
             stepped: Default::default(),
-            stepped_not_zero: Default::default(),
-            stepped_at_limit: Default::default(),
-            stepped_low_all_ones: Default::default(),
-            stepped_low_not_zero: Default::default(),
+            up: Default::default(),
+            up_not_zero: Default::default(),
+            up_at_limit: Default::default(),
+            up_low_all_ones: Default::default(),
+            up_low_not_zero: Default::default(),
+            down: Default::default(),
+            down_not_zero: Default::default(),
+            down_at_limit: Default::default(),
+            down_low_all_ones: Default::default(),
+            down_low_not_zero: Default::default(),
             plus_one: Default::default(),
             minus_one: Default::default(),
             low: Default::default(),
@@ -205,7 +229,6 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             any_now: Default::default(),
             more_now: Default::default(),
             over_now: Default::default(),
-            fwd_now: Default::default(),
             mixed_now: Default::default(),
             bad: Default::default(),
             pos_zero: Constant::new(0.into()),
@@ -244,7 +267,6 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             rev_any,
             rev_more,
             rev_over,
-            rev_fwd,
             rev_mixed,
             error_reg,
             error_count,
@@ -275,48 +297,49 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
         self.limit_low_all_ones.next =
             (self.limit.val() & self.low_mask.val()) == self.low_mask.val();
         self.limit_low_zero.next = (self.limit.val() & self.low_mask.val()) == self.pos_zero.val();
-        self.stepped.next = self.position_reg.q.val();
-        self.stepped_not_zero.next = self.not_zero.q.val();
-        self.stepped_at_limit.next = self.at_limit.q.val();
-        self.stepped_low_all_ones.next = self.low_all_ones.q.val();
-        self.stepped_low_not_zero.next = self.low_not_zero.q.val();
-        if self.step.val() & self.forward.val() {
-            if self.at_limit.q.val() {
-                self.stepped.next = self.pos_zero.val();
-                self.stepped_not_zero.next = false;
-                self.stepped_at_limit.next = self.single.val();
-                self.stepped_low_all_ones.next = false;
-                self.stepped_low_not_zero.next = false;
-            } else {
-                self.stepped.next = self.plus_one.val();
-                self.stepped_not_zero.next = true;
-                self.stepped_at_limit.next = self.position_reg.q.val() == self.limit_less_one.val();
-                self.stepped_low_all_ones.next = self.low.val() == self.low_max_less_one.val();
-                self.stepped_low_not_zero.next = !self.low_all_ones.q.val();
-            }
+        // The position after a forward step and after a backward step, with their flags,
+        // from registers only: a whole cycle for the carry chains and the comparisons. The
+        // step and its direction, which arrive from the decoder's registers, then only
+        // choose between them (and enable the registers), one logic level in front of them.
+        self.up.next = self.plus_one.val();
+        self.up_not_zero.next = true;
+        self.up_at_limit.next = self.position_reg.q.val() == self.limit_less_one.val();
+        self.up_low_all_ones.next = self.low.val() == self.low_max_less_one.val();
+        self.up_low_not_zero.next = !self.low_all_ones.q.val();
+        if self.at_limit.q.val() {
+            self.up.next = self.pos_zero.val();
+            self.up_not_zero.next = false;
+            self.up_at_limit.next = self.single.val();
+            self.up_low_all_ones.next = false;
+            self.up_low_not_zero.next = false;
         }
-        if self.step.val() & !self.forward.val() {
-            if !self.not_zero.q.val() {
-                self.stepped.next = self.limit.val();
-                self.stepped_not_zero.next = !self.single.val();
-                self.stepped_at_limit.next = true;
-                self.stepped_low_all_ones.next = self.limit_low_all_ones.val();
-                self.stepped_low_not_zero.next = !self.limit_low_zero.val();
+        self.down.next = self.minus_one.val();
+        self.down_not_zero.next = self.position_reg.q.val() != self.pos_one.val();
+        self.down_at_limit.next = false;
+        self.down_low_all_ones.next = !self.low_not_zero.q.val();
+        self.down_low_not_zero.next = self.low.val() != self.pos_one.val();
+        if !self.not_zero.q.val() {
+            self.down.next = self.limit.val();
+            self.down_not_zero.next = !self.single.val();
+            self.down_at_limit.next = true;
+            self.down_low_all_ones.next = self.limit_low_all_ones.val();
+            self.down_low_not_zero.next = !self.limit_low_zero.val();
+        }
+        // The position with this cycle's step, for the index latch.
+        self.stepped.next = self.position_reg.q.val();
+        if self.step.val() {
+            if self.forward.val() {
+                self.stepped.next = self.up.val();
             } else {
-                self.stepped.next = self.minus_one.val();
-                self.stepped_not_zero.next = self.position_reg.q.val() != self.pos_one.val();
-                self.stepped_at_limit.next = false;
-                self.stepped_low_all_ones.next = !self.low_not_zero.q.val();
-                self.stepped_low_not_zero.next = self.low.val() != self.pos_one.val();
+                self.stepped.next = self.down.val();
             }
         }
 
         // The interval since the last index edge, this cycle's step included: count − 1 in
-        // `more` (with `over` once it passes 2^C − 1), direction of the first step, mixed.
+        // `more` (with `over` once it passes 2^C − 1), and whether it mixes directions.
         self.any_now.next = self.rev_any.q.val();
         self.more_now.next = self.rev_more.q.val();
         self.over_now.next = self.rev_over.q.val();
-        self.fwd_now.next = self.rev_fwd.q.val();
         self.mixed_now.next = self.rev_mixed.q.val();
         if self.step.val() {
             if self.rev_any.q.val() {
@@ -325,14 +348,14 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
                 } else {
                     self.more_now.next = self.rev_more.q.val() + self.pos_one.val();
                 }
-                if self.forward.val() ^ self.rev_fwd.q.val() {
+                // A reversal after a step of this interval: the interval mixes directions.
+                if self.first.val() {
                     self.mixed_now.next = true;
                 }
             } else {
                 self.any_now.next = true;
                 self.more_now.next = self.pos_zero.val();
                 self.over_now.next = false;
-                self.fwd_now.next = self.forward.val();
                 self.mixed_now.next = false;
             }
         }
@@ -356,17 +379,29 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             & !self.mixed_now.val()
             & (self.over_now.val() | !self.count_is_rev.val());
 
-        self.position_reg.d.next = self.stepped.val();
-        self.not_zero.d.next = self.stepped_not_zero.val();
-        self.at_limit.d.next = self.stepped_at_limit.val();
-        self.low_all_ones.d.next = self.stepped_low_all_ones.val();
-        self.low_not_zero.d.next = self.stepped_low_not_zero.val();
+        // Written here rather than copied from `stepped`, so that each register's input is
+        // its own multiplexer with the register's output as one leaf: synthesis turns
+        // that into a clock enable (the step) instead of a multiplexer after the choice.
+        if self.step.val() {
+            if self.forward.val() {
+                self.position_reg.d.next = self.up.val();
+                self.not_zero.d.next = self.up_not_zero.val();
+                self.at_limit.d.next = self.up_at_limit.val();
+                self.low_all_ones.d.next = self.up_low_all_ones.val();
+                self.low_not_zero.d.next = self.up_low_not_zero.val();
+            } else {
+                self.position_reg.d.next = self.down.val();
+                self.not_zero.d.next = self.down_not_zero.val();
+                self.at_limit.d.next = self.down_at_limit.val();
+                self.low_all_ones.d.next = self.down_low_all_ones.val();
+                self.low_not_zero.d.next = self.down_low_not_zero.val();
+            }
+        }
         self.index_reg.d.next = self.rise.val();
         self.fault_reg.d.next = false;
         self.rev_any.d.next = self.any_now.val();
         self.rev_more.d.next = self.more_now.val();
         self.rev_over.d.next = self.over_now.val();
-        self.rev_fwd.d.next = self.fwd_now.val();
         self.rev_mixed.d.next = self.mixed_now.val();
         if self.rise.val() {
             if (self.cfg_z_mode.val() == self.mode_latch.val())
@@ -410,7 +445,6 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             self.rev_any.d.next = false;
             self.rev_more.d.next = self.pos_zero.val();
             self.rev_over.d.next = false;
-            self.rev_fwd.d.next = false;
             self.rev_mixed.d.next = false;
             self.error_reg.d.next = false;
             self.error_count.d.next = self.count_zero.val();
@@ -440,11 +474,19 @@ mod tests {
         let mut uut = PositionCounter::<4, 2>::default();
         uut.connect_all();
         let mut out = vec![];
+        // The decoder's `first`: no step since reset, or against the last step.
+        let mut last: Option<bool> = None;
         for k in 0..=ins.len() {
             let (s, f, z) = if k == 0 { (0, 0, 0) } else { ins[k - 1] };
             uut.reset.next = k == 0;
             uut.step.next = s == 1;
             uut.forward.next = f == 1;
+            uut.first.next = s == 1 && last != Some(f == 1);
+            if k == 0 {
+                last = None;
+            } else if s == 1 {
+                last = Some(f == 1);
+            }
             uut.z.next = z == 1;
             let (limit, limit_less_one) = golden::frontend::position_counter::limits(cpr, 4);
             uut.limit.next = limit.into();

@@ -413,6 +413,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.counter.reset.next = self.front_reset.val();
         self.counter.step.next = self.decoder.step.val();
         self.counter.forward.next = self.decoder.forward.val();
+        self.counter.first.next = self.decoder.first.val();
         self.counter.z.next = self.filter_z.level_out.val();
         self.counter.limit.next = self.limit.val();
         self.counter.limit_less_one.next = self.limit_less_one.val();
@@ -502,6 +503,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.pc.forward.next = self.decoder.forward.val();
         self.et.forward.next = self.decoder.forward.val();
         self.mt.forward.next = self.decoder.forward.val();
+        self.mt.first.next = self.decoder.first.val();
         // The time bases read the dt register: a dt change shows in dt_active one edge after
         // it is sampled and moves the windows from the edge after that.
         self.pc.cfg_dt.next = self.dt_reg.q.val();

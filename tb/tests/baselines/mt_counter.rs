@@ -20,6 +20,7 @@ fn mt_step<const N: usize>(uut: &mut MtCounter<N>, c: &Cycle) -> MtOutputs {
     uut.reset.next = c.reset;
     uut.step.next = c.step;
     uut.forward.next = c.forward;
+    uut.first.next = c.first;
     uut.cfg_dt.next = c.cfg_dt.into();
     common::edge(uut, |u, v| u.clock.next = Clock { clk: v });
     MtOutputs {
@@ -62,10 +63,11 @@ fn mt_icarus<const N: usize>(seed: u64) {
         strobes += usize::from(o.strobe);
         negatives += usize::from(o.strobe && o.negative && o.m > 0);
         vectors += &format!(
-            "{:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
+            "{:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
             u8::from(c.reset),
             u8::from(c.step),
             u8::from(c.forward),
+            u8::from(c.first),
             c.cfg_dt,
             o.m,
             o.t,
@@ -77,7 +79,13 @@ fn mt_icarus<const N: usize>(seed: u64) {
     assert!(negatives > 0, "the stimulus must cover reverse");
     let tb = common::replay_bench(
         "mt_counter",
-        &[("reset", 1), ("step", 1), ("forward", 1), ("cfg_dt", N)],
+        &[
+            ("reset", 1),
+            ("step", 1),
+            ("forward", 1),
+            ("first", 1),
+            ("cfg_dt", N),
+        ],
         &[
             ("m", N),
             ("t", N),

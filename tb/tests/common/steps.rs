@@ -16,6 +16,9 @@ pub struct Cycle {
     pub step: bool,
     /// Its direction.
     pub forward: bool,
+    /// With `step`, the decoder's `first`: no step since the last reset, or a step against
+    /// the last one (set by [`mark_first`] from the cycles before).
+    pub first: bool,
     /// dt in cycles (N bits).
     pub cfg_dt: u64,
 }
@@ -58,9 +61,25 @@ pub fn stimulus(seed: u64, bits: u32, len: usize) -> Vec<Cycle> {
                 rng.next().is_multiple_of(2)
             },
             cfg_dt: dt,
+            first: false,
         });
     }
+    mark_first(&mut out);
     out
+}
+
+/// Sets each cycle's `first` as the decoder makes it: a step with no step since the last
+/// reset, or against the direction of the last step. A reset cycle's step is not made.
+pub fn mark_first(cycles: &mut [Cycle]) {
+    let mut last: Option<bool> = None;
+    for c in cycles {
+        c.first = c.step && last != Some(c.forward);
+        if c.reset {
+            last = None;
+        } else if c.step {
+            last = Some(c.forward);
+        }
+    }
 }
 
 /// Many stimulus cases back to back (a reset between them).
@@ -71,6 +90,7 @@ pub fn long_stimulus(seed: u64, bits: u32, cases: u64) -> Vec<Cycle> {
         s[0].reset = true;
         out.extend(s);
     }
+    mark_first(&mut out);
     out
 }
 

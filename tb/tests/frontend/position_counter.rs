@@ -91,6 +91,23 @@ fn stimulus(k: Knobs) -> Vec<CounterInputs> {
         .collect()
 }
 
+/// The decoder's `first` for each cycle, as the core feeds it: a step with no step since
+/// the last reset, or against the last step (a reset cycle's step is not made).
+fn firsts(stim: &[CounterInputs]) -> Vec<bool> {
+    let mut last: Option<bool> = None;
+    stim.iter()
+        .map(|i| {
+            let first = i.step && last != Some(i.forward);
+            if i.reset {
+                last = None;
+            } else if i.step {
+                last = Some(i.forward);
+            }
+            first
+        })
+        .collect()
+}
+
 fn golden(stim: &[CounterInputs]) -> Vec<CounterOutputs> {
     let mut m = GoldCounter::new(POSITION_BITS as u32, REV_ERROR_BITS as u32);
     stim.iter().map(|&i| m.step(i)).collect()
@@ -100,10 +117,12 @@ fn rust_hdl(stim: &[CounterInputs]) -> Vec<CounterOutputs> {
     let mut uut = PositionCounter::<POSITION_BITS, REV_ERROR_BITS>::default();
     uut.connect_all();
     stim.iter()
-        .map(|i| {
+        .zip(firsts(stim))
+        .map(|(i, first)| {
             uut.reset.next = i.reset;
             uut.step.next = i.step;
             uut.forward.next = i.forward;
+            uut.first.next = first;
             uut.z.next = i.z;
             let (limit, limit_less_one) = limits(i.counts_per_rev, POSITION_BITS as u32);
             uut.limit.next = limit.into();
@@ -170,11 +189,13 @@ fn emitted_verilog_equals_golden_in_icarus() {
         .collect();
     let vectors: Vec<Vec<u64>> = stim
         .iter()
-        .map(|i| {
+        .zip(firsts(&stim))
+        .map(|(i, first)| {
             vec![
                 u64::from(i.reset),
                 u64::from(i.step),
                 u64::from(i.forward),
+                u64::from(first),
                 u64::from(i.z),
                 limits(i.counts_per_rev, POSITION_BITS as u32).0,
                 limits(i.counts_per_rev, POSITION_BITS as u32).1,
@@ -190,6 +211,7 @@ fn emitted_verilog_equals_golden_in_icarus() {
             ("reset", 1),
             ("step", 1),
             ("forward", 1),
+            ("first", 1),
             ("z", 1),
             ("limit", POSITION_BITS),
             ("limit_less_one", POSITION_BITS),
