@@ -246,6 +246,10 @@ pub fn counter_bits_of(verilog: &str, module: &str) -> Result<u32, String> {
 /// outputs `O` after it.
 pub struct Simulator<I, O> {
     exe: PathBuf,
+    /// The build's name prefix, top module and files, for the traced build a VCD needs.
+    prefix: String,
+    module: String,
+    files: Vec<(String, String)>,
     inputs: Vec<Port>,
     outputs: Vec<Port>,
     cycle: PhantomData<fn(I) -> O>,
@@ -264,24 +268,25 @@ impl<I: PortFields + Clone, O: PortFields> Simulator<I, O> {
         if !verilog.contains(&format!("module {module}(")) {
             return Err(format!("the Verilog has no module {module}"));
         }
-        let exe = tools::verilator_build(
-            &format!("{module}-"),
-            module,
-            &[
-                ("waivers.vlt", waivers),
-                (&format!("{module}.v"), verilog),
-                ("harness.cpp", &harness(module, ports, mode)),
-            ],
-        )?;
+        let prefix = format!("{module}-");
+        let files = vec![
+            ("waivers.vlt".to_string(), waivers.to_string()),
+            (format!("{module}.v"), verilog.to_string()),
+            ("harness.cpp".to_string(), harness(module, ports, mode)),
+        ];
+        let exe = tools::verilator_build(&prefix, module, &file_refs(&files), false)?;
         Ok(Simulator {
             exe,
+            prefix,
+            module: module.to_string(),
+            files,
             inputs: cycle_inputs(ports),
             outputs: cycle_outputs(ports),
             cycle: PhantomData,
         })
     }
 
-    /// Path of the compiled harness.
+    /// Path of the compiled harness (built without `--trace`: it cannot write a VCD).
     pub fn exe(&self) -> &Path {
         &self.exe
     }
@@ -300,14 +305,19 @@ impl<I: PortFields + Clone, O: PortFields> Simulator<I, O> {
     }
 
     /// Run `inputs` through the compiled Verilog, one clock edge per input; optionally write
-    /// a VCD of every signal to `vcd`.
+    /// a VCD of every signal to `vcd` (from a second build, with `--trace`, made on the first
+    /// such call).
     pub fn run(&self, inputs: &[I], vcd: Option<&Path>) -> Result<Vec<O>, String> {
         let text: String = inputs.iter().map(|i| self.input_line(i) + "\n").collect();
-        let args: Vec<String> = vcd
-            .map(|path| vec!["--vcd".into(), path.display().to_string()])
-            .unwrap_or_default();
+        let (exe, args) = match vcd {
+            None => (self.exe.clone(), vec![]),
+            Some(path) => (
+                tools::verilator_build(&self.prefix, &self.module, &file_refs(&self.files), true)?,
+                vec!["--vcd".to_string(), path.display().to_string()],
+            ),
+        };
         let mut outs = Vec::with_capacity(inputs.len());
-        converse(&self.exe, &args, text, |line| {
+        converse(&exe, &args, text, |line| {
             outs.push(self.outputs_of(line)?);
             Ok(())
         })?;
@@ -320,6 +330,14 @@ impl<I: PortFields + Clone, O: PortFields> Simulator<I, O> {
         }
         Ok(outs)
     }
+}
+
+/// (name, contents) pairs as [`tools::verilator_build`] takes them.
+fn file_refs(files: &[(String, String)]) -> Vec<(&str, &str)> {
+    files
+        .iter()
+        .map(|(name, text)| (name.as_str(), text.as_str()))
+        .collect()
 }
 
 /// `verilator --lint-only -Wall` on `verilog`, top module `module`, with `waivers`; Ok on a

@@ -26,8 +26,7 @@ use hdl::sim::ecc_sim::build_ecc;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use tb::ecc_ripple::{
-    draw_svg, figures, identify_on_verilog, run_verilog, Identification, Ripple, RippleSetup,
-    Stimulus,
+    draw_svg, figures, run_verilog, Identification, Ripple, RippleSetup, Stimulus,
 };
 use tb::ecc_verilator::{EccStrobe, EccVerilated, EventLog};
 
@@ -163,157 +162,182 @@ fn shipped(p: &Params) -> EccVerilated {
     EccVerilated::build(&shipped, p.speed_bits()).unwrap()
 }
 
-/// The rigid disc at e = 0.35/30, θ0 = 50°, on the shipped `generated/encspeed_ecc.v`
-/// (the default parameters: 100 MHz, K = 1024, dt = 1 ms, N = 24).
-#[test]
-fn corrected_ripple_on_verilog() {
+/// The rigid disc at e = 0.35/30, θ0 = 50°, at `rpm` for `revs` revolutions, on the shipped
+/// `generated/encspeed_ecc.v` (the default parameters: 100 MHz, K = 1024, dt = 1 ms,
+/// N = 24), the corrector loaded with the disc's own coefficients: every strobe and the
+/// identification equal to the bit-true model's, the ripple of M/T and n3 before and after
+/// correction within their budgets. The model runs on a thread of its own beside Verilator
+/// (a revolution at 30 r/min is 2·10^8 cycles). Returns the Verilog's identification (armed
+/// at the first index; none in runs of two revolutions or less).
+fn corrected_ripple_on_verilog(rpm: f64, revs: f64) -> Option<Identification> {
     let p = Params::new(Spec::default()).unwrap();
     let sim = shipped(&p);
     let dir = tools::target_dir().join("ecc-ripple");
     std::fs::create_dir_all(&dir).unwrap();
-    for (rpm, revs) in [(30.0, 1.0), (600.0, 3.0), (6000.0, 20.0)] {
-        let e = 0.35 / 30.0;
-        let setup = RippleSetup {
-            rpm,
-            revs,
-            e,
-            theta0: 50f64.to_radians(),
-            loaded: None,
-        };
-        let (log, stim) = run_verilog(&sim, &p, &setup).unwrap();
-        let want = model_log(&p, &setup, &stim);
-        assert_eq!(log.strobes.len(), want.strobes.len(), "{rpm} rpm: strobes");
-        for (g, w) in log.strobes.iter().zip(&want.strobes) {
-            assert_eq!(g, w, "{rpm} rpm: Verilog and model differ");
-        }
-        assert_eq!(log.ident, want.ident, "{rpm} rpm: identification");
-        // The estimates kept count from line 0: the index was processed by then.
-        assert!(
-            want.first_index <= stim.aligned_after,
-            "{rpm} rpm: index at {}, after {}",
-            want.first_index,
-            stim.aligned_after
-        );
-        let ripple = Ripple::new(&p, setup, &log.strobes, stim.aligned_after);
-        println!("{}", ripple.summary());
-        // The identification armed at the first index: one revolution gathered in the
-        // runs of more than two, e and θ0 within their budget.
-        match Identification::of(&p, &setup, &log) {
-            Some(id) => {
-                println!("{}", id.summary());
-                assert_eq!(
-                    check_revolution(&id.gathered, p.lines(), 1e8 * 60.0 / rpm),
-                    Ok(())
-                );
-                assert_eq!(id.within_budget(), Ok(()), "{rpm} rpm");
-            }
-            None => assert!(
-                revs < 2.1,
-                "{rpm} rpm: no identification in {revs} revolutions"
-            ),
-        }
-        std::fs::write(dir.join(format!("rpm{rpm}.csv")), ripple.csv()).unwrap();
-        draw_svg(
-            &dir.join(format!("rpm{rpm}.svg")),
-            &format!("encspeed_ecc.v in Verilator, {rpm} r/min"),
-            &ripple,
+    let e = 0.35 / 30.0;
+    let setup = RippleSetup {
+        rpm,
+        revs,
+        e,
+        theta0: 50f64.to_radians(),
+        loaded: None,
+    };
+    let (verilog, model) = std::thread::scope(|s| {
+        let model = s.spawn(|| {
+            let stim = setup.stimulus(&p).unwrap();
+            model_log(&p, &setup, &stim)
+        });
+        (
+            run_verilog(&sim, &p, &setup).unwrap(),
+            model.join().unwrap(),
         )
-        .unwrap();
-        let (b, a) = (figures(&ripple.mt_before), figures(&ripple.mt_after));
-        assert!(
-            b.h1_ppm > 0.9 * e * 1e6,
-            "{rpm} rpm: 1/rev before {}",
-            b.h1_ppm
-        );
-        assert!(
-            a.worst_ppm <= ripple.mt_budget_ppm,
-            "{rpm} rpm: worst {} ppm, budget {}",
-            a.worst_ppm,
-            ripple.mt_budget_ppm
-        );
-        assert!(
-            b.h1_ppm / a.h1_ppm > 1000.0,
-            "{rpm} rpm: ratio {}",
-            b.h1_ppm / a.h1_ppm
-        );
-        // n3 against Rairán's bound for the hardware (eq. 13 with the clock's quantisation)
-        // at each estimate's n1. Corrected, n3 is within its bound at every speed. Below
-        // r = 1/(2e) (43 lines per dt here) n3's dead zone hides the eccentricity (no
-        // dither: p-p 0) and the correction puts the true ripple back, inside the bound;
-        // above it the eccentricity breaks the bound, the correction restores it and the
-        // 1/rev ripple falls to n3's quantisation (docs/eccentricity-hardware.md).
-        let (worst_b, worst_a) = (
-            Ripple::worst_over_bound(&ripple.n3_before),
-            Ripple::worst_over_bound(&ripple.n3_after),
-        );
-        let (fb, fa) = (
-            figures(&Ripple::errors(&ripple.n3_before)),
-            figures(&Ripple::errors(&ripple.n3_after)),
-        );
-        assert!(
-            worst_a <= 1.0,
-            "{rpm} rpm: corrected n3 beyond its bound: {worst_a}"
-        );
-        if ripple.r < 0.5 / e {
-            assert_eq!(fb.pp_ppm, 0.0, "{rpm} rpm: n3 dithers in its dead zone");
-            assert!(worst_b <= 1.0);
-        } else {
-            assert!(
-                worst_b > 1.0,
-                "{rpm} rpm: the eccentricity should break eq. (13)"
-            );
-            assert!(
-                fb.h1_ppm / fa.h1_ppm > 20.0,
-                "{rpm} rpm: n3 1/rev {} -> {}",
-                fb.h1_ppm,
-                fa.h1_ppm
-            );
-        }
+    });
+    let (log, stim) = verilog;
+    let want = model;
+    assert_eq!(log.strobes.len(), want.strobes.len(), "{rpm} rpm: strobes");
+    for (g, w) in log.strobes.iter().zip(&want.strobes) {
+        assert_eq!(g, w, "{rpm} rpm: Verilog and model differ");
     }
+    assert_eq!(log.ident, want.ident, "{rpm} rpm: identification");
+    // The estimates kept count from line 0: the index was processed by then.
+    assert!(
+        want.first_index <= stim.aligned_after,
+        "{rpm} rpm: index at {}, after {}",
+        want.first_index,
+        stim.aligned_after
+    );
+    let ripple = Ripple::new(&p, setup, &log.strobes, stim.aligned_after);
+    println!("{}", ripple.summary());
+    // The identification armed at the first index: one revolution gathered in the runs of
+    // more than two, e and θ0 within their budget.
+    let id = Identification::of(&p, &setup, &log);
+    match id {
+        Some(id) => {
+            println!("{}", id.summary());
+            assert_eq!(
+                check_revolution(&id.gathered, p.lines(), 1e8 * 60.0 / rpm),
+                Ok(())
+            );
+            assert_eq!(id.within_budget(), Ok(()), "{rpm} rpm");
+        }
+        None => assert!(
+            revs < 2.1,
+            "{rpm} rpm: no identification in {revs} revolutions"
+        ),
+    }
+    std::fs::write(dir.join(format!("rpm{rpm}.csv")), ripple.csv()).unwrap();
+    draw_svg(
+        &dir.join(format!("rpm{rpm}.svg")),
+        &format!("encspeed_ecc.v in Verilator, {rpm} r/min"),
+        &ripple,
+    )
+    .unwrap();
+    let b = figures(&ripple.mt_before);
+    assert!(
+        b.h1_ppm > 0.9 * e * 1e6,
+        "{rpm} rpm: 1/rev before {}",
+        b.h1_ppm
+    );
+    assert_mt_corrected(rpm, &ripple, 0.0);
+    // n3 against Rairán's bound for the hardware (eq. 13 with the clock's quantisation) at
+    // each estimate's n1. Corrected, n3 is within its bound at every speed. Below
+    // r = 1/(2e) (43 lines per dt here) n3's dead zone hides the eccentricity (no dither:
+    // p-p 0) and the correction puts the true ripple back, inside the bound; above it the
+    // eccentricity breaks the bound, the correction restores it and the 1/rev ripple falls
+    // to n3's quantisation (docs/eccentricity-hardware.md).
+    let (worst_b, worst_a) = (
+        Ripple::worst_over_bound(&ripple.n3_before),
+        Ripple::worst_over_bound(&ripple.n3_after),
+    );
+    let (fb, fa) = (
+        figures(&Ripple::errors(&ripple.n3_before)),
+        figures(&Ripple::errors(&ripple.n3_after)),
+    );
+    assert!(
+        worst_a <= 1.0,
+        "{rpm} rpm: corrected n3 beyond its bound: {worst_a}"
+    );
+    if ripple.r < 0.5 / e {
+        assert_eq!(fb.pp_ppm, 0.0, "{rpm} rpm: n3 dithers in its dead zone");
+        assert!(worst_b <= 1.0);
+    } else {
+        assert!(
+            worst_b > 1.0,
+            "{rpm} rpm: the eccentricity should break eq. (13)"
+        );
+        assert!(
+            fb.h1_ppm / fa.h1_ppm > 20.0,
+            "{rpm} rpm: n3 1/rev {} -> {}",
+            fb.h1_ppm,
+            fa.h1_ppm
+        );
+    }
+    id
 }
 
-/// The IP's whole loop on the shipped Verilog: its identification gathers one revolution
-/// (armed at the first index), e and θ0 follow from the sums, the corrector is loaded with
-/// them, and the once-per-revolution ripple of M/T falls more than 1000× as with the
-/// disc's true coefficients, every estimate within its budget plus the ripple the
-/// identification's error leaves (|Δe| + e·|Δθ0| of the speed).
-#[test]
-fn identified_then_corrected_on_verilog() {
+/// The IP's whole loop on the shipped Verilog, after [`corrected_ripple_on_verilog`] at
+/// `rpm` gave the identification `id` (one revolution gathered, armed at the first index;
+/// the same as `identify_on_verilog`'s run of 2.1 revolutions, whose stimulus is the first
+/// part of this one's): e and θ0 follow from the sums, the corrector is loaded with them,
+/// and the once-per-revolution ripple of M/T falls more than 1000× as with the disc's true
+/// coefficients, every estimate within its budget plus the ripple the identification's
+/// error leaves (|Δe| + e·|Δθ0| of the speed).
+fn identified_then_corrected_on_verilog(rpm: f64, revs: f64, id: Identification) {
     let p = Params::new(Spec::default()).unwrap();
     let sim = shipped(&p);
-    for (rpm, revs) in [(6000.0, 20.0), (600.0, 3.0)] {
-        let e = 0.35 / 30.0;
-        let mut setup = RippleSetup {
-            rpm,
-            revs,
-            e,
-            theta0: 50f64.to_radians(),
-            loaded: None,
-        };
-        let id = identify_on_verilog(&sim, &p, &setup).unwrap();
-        println!("{}", id.summary());
-        assert_eq!(id.within_budget(), Ok(()), "{rpm} rpm");
-        // The goal, by a wide margin: e within 1 %, θ0 within 1°.
-        assert!(id.e_error.abs() < 0.01 * e && id.theta0_error.abs() < 1f64.to_radians());
-        setup.loaded = Some((id.identified.e, id.identified.theta0));
-        let (log, stim): (EventLog, _) = run_verilog(&sim, &p, &setup).unwrap();
-        let ripple = Ripple::new(&p, setup, &log.strobes, stim.aligned_after);
-        println!(
-            "corrected with the identified e and theta0:\n{}",
-            ripple.summary()
-        );
-        let (b, a) = (figures(&ripple.mt_before), figures(&ripple.mt_after));
-        let left = (id.e_error.abs() + e * id.theta0_error.abs()) * 1e6;
-        assert!(
-            a.worst_ppm <= ripple.mt_budget_ppm + left,
-            "{rpm} rpm: worst {} ppm, budget {} + {left}",
-            a.worst_ppm,
-            ripple.mt_budget_ppm
-        );
-        assert!(
-            b.h1_ppm / a.h1_ppm > 1000.0,
-            "{rpm} rpm: ratio {}",
-            b.h1_ppm / a.h1_ppm
-        );
-    }
+    let e = 0.35 / 30.0;
+    // The goal, by a wide margin: e within 1 %, θ0 within 1°.
+    assert!(id.e_error.abs() < 0.01 * e && id.theta0_error.abs() < 1f64.to_radians());
+    let setup = RippleSetup {
+        rpm,
+        revs,
+        e,
+        theta0: 50f64.to_radians(),
+        loaded: Some((id.identified.e, id.identified.theta0)),
+    };
+    let (log, stim): (EventLog, _) = run_verilog(&sim, &p, &setup).unwrap();
+    let ripple = Ripple::new(&p, setup, &log.strobes, stim.aligned_after);
+    println!(
+        "{rpm} r/min, corrected with the identified e and theta0:\n{}",
+        ripple.summary()
+    );
+    let left = (id.e_error.abs() + e * id.theta0_error.abs()) * 1e6;
+    assert_mt_corrected(rpm, &ripple, left);
+}
+
+/// Corrected M/T: every estimate within its budget plus `left` ppm, and the
+/// once-per-revolution ripple down more than 1000×.
+fn assert_mt_corrected(rpm: f64, ripple: &Ripple, left: f64) {
+    let (b, a) = (figures(&ripple.mt_before), figures(&ripple.mt_after));
+    assert!(
+        a.worst_ppm <= ripple.mt_budget_ppm + left,
+        "{rpm} rpm: worst {} ppm, budget {} + {left}",
+        a.worst_ppm,
+        ripple.mt_budget_ppm
+    );
+    assert!(
+        b.h1_ppm / a.h1_ppm > 1000.0,
+        "{rpm} rpm: ratio {}",
+        b.h1_ppm / a.h1_ppm
+    );
+}
+
+/// 30 r/min, one revolution (0.512 lines per dt: most windows see no edge).
+#[test]
+fn corrected_ripple_on_verilog_30_rpm() {
+    assert!(corrected_ripple_on_verilog(30.0, 1.0).is_none());
+}
+
+/// 600 r/min, three revolutions, then the whole loop.
+#[test]
+fn corrected_ripple_then_whole_loop_on_verilog_600_rpm() {
+    let id = corrected_ripple_on_verilog(600.0, 3.0).expect("identification at 600 r/min");
+    identified_then_corrected_on_verilog(600.0, 3.0, id);
+}
+
+/// 6000 r/min, twenty revolutions, then the whole loop.
+#[test]
+fn corrected_ripple_then_whole_loop_on_verilog_6000_rpm() {
+    let id = corrected_ripple_on_verilog(6000.0, 20.0).expect("identification at 6000 r/min");
+    identified_then_corrected_on_verilog(6000.0, 20.0, id);
 }

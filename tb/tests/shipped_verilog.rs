@@ -132,11 +132,15 @@ fn yosys_synthesises_it_for_ice40_without_latches() {
     assert!(log.contains("SB_LUT4"), "no logic synthesised:\n{log}");
 }
 
+// The two ecc synthesis tests are the binary's longest (yosys takes minutes on each): their
+// names sort first, so that libtest, which starts tests in name order, runs them side by
+// side from the start and the short tests fill the gap after the first ends.
+
 /// `generated/encspeed_ecc.v` synthesises without latches, and its four sine tables (one
 /// per corrector, the identification's sine and cosine; K = 1024 words of 24 bits = 24
 /// kbit each) map to block RAM: 6 SB_RAM40_4K (4 kbit) each, 24 in all, by hand.
 #[test]
-fn yosys_synthesises_the_ecc_top_with_its_tables_in_block_ram() {
+fn ecc_top_synthesises_in_yosys_with_its_tables_in_block_ram() {
     let v = std::fs::read_to_string(generated("encspeed_ecc.v")).expect("generated/encspeed_ecc.v");
     let log = yosys_synth("encspeed_ecc", &v);
     let brams = log
@@ -151,7 +155,7 @@ fn yosys_synthesises_the_ecc_top_with_its_tables_in_block_ram() {
 /// 24 block RAMs as `encspeed_ecc` (the two register files add none); the cell counts are
 /// printed for docs/benchmarks.md.
 #[test]
-fn yosys_synthesises_the_ecc_wishbone_top() {
+fn ecc_wishbone_top_synthesises_in_yosys() {
     let v = std::fs::read_to_string(generated("encspeed_ecc_wb.v"))
         .expect("generated/encspeed_ecc_wb.v");
     let log = yosys_synth("encspeed_ecc_wb", &v);

@@ -68,17 +68,30 @@ pub fn stimulus(seed: u64, bits: u32, len: usize) -> Vec<Cycle> {
     out
 }
 
-/// Sets each cycle's `first` as the decoder makes it: a step with no step since the last
-/// reset, or against the direction of the last step. A reset cycle's step is not made.
-pub fn mark_first(cycles: &mut [Cycle]) {
+/// The decoder's `first` for each cycle of (reset, step, forward): a step with no step since
+/// the last reset, or against the direction of the last step. A reset cycle's step is not
+/// made.
+pub fn first_steps(cycles: impl IntoIterator<Item = (bool, bool, bool)>) -> Vec<bool> {
     let mut last: Option<bool> = None;
-    for c in cycles {
-        c.first = c.step && last != Some(c.forward);
-        if c.reset {
-            last = None;
-        } else if c.step {
-            last = Some(c.forward);
-        }
+    cycles
+        .into_iter()
+        .map(|(reset, step, forward)| {
+            let first = step && last != Some(forward);
+            if reset {
+                last = None;
+            } else if step {
+                last = Some(forward);
+            }
+            first
+        })
+        .collect()
+}
+
+/// Sets each cycle's `first` as the decoder makes it ([`first_steps`]).
+pub fn mark_first(cycles: &mut [Cycle]) {
+    let firsts = first_steps(cycles.iter().map(|c| (c.reset, c.step, c.forward)));
+    for (c, first) in cycles.iter_mut().zip(firsts) {
+        c.first = first;
     }
 }
 

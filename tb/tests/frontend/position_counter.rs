@@ -94,18 +94,7 @@ fn stimulus(k: Knobs) -> Vec<CounterInputs> {
 /// The decoder's `first` for each cycle, as the core feeds it: a step with no step since
 /// the last reset, or against the last step (a reset cycle's step is not made).
 fn firsts(stim: &[CounterInputs]) -> Vec<bool> {
-    let mut last: Option<bool> = None;
-    stim.iter()
-        .map(|i| {
-            let first = i.step && last != Some(i.forward);
-            if i.reset {
-                last = None;
-            } else if i.step {
-                last = Some(i.forward);
-            }
-            first
-        })
-        .collect()
+    common::steps::first_steps(stim.iter().map(|i| (i.reset, i.step, i.forward)))
 }
 
 fn golden(stim: &[CounterInputs]) -> Vec<CounterOutputs> {

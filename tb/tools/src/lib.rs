@@ -183,13 +183,19 @@ pub fn lint_verilog(top: &str, verilog: &str) -> Result<(), String> {
     lint(&dir, top, &["-Wno-DECLFILENAME"], &[&file]).map(|_| ())
 }
 
-/// The executable of `verilator --cc --exe --build -O3 --trace` of `files` (name, contents:
-/// the `.vlt` waivers, the Verilog and the C++ harness, in the order Verilator should read
-/// them) with top module `top`, built once per content in `target/verilator/<prefix><hash>/`
-/// (`obj/V<top>`). Each call builds in a directory private to the process and the call and
+/// The executable of `verilator --cc --exe --build -O3` of `files` (name, contents: the
+/// `.vlt` waivers, the Verilog and the C++ harness, in the order Verilator should read them)
+/// with top module `top`, with `--trace` if `trace` (only a run that writes a VCD needs it:
+/// the tracing hooks cost about a sixth of the speed of every run, traced or not), built once
+/// per content and `trace` in `target/verilator/<prefix><hash>/` (`obj/V<top>`). Each call builds in a directory private to the process and the call and
 /// renames it into place, so parallel tests never see or write into a half-built one.
-pub fn verilator_build(prefix: &str, top: &str, files: &[(&str, &str)]) -> Result<PathBuf, String> {
-    let mut parts: Vec<&str> = vec![top];
+pub fn verilator_build(
+    prefix: &str,
+    top: &str,
+    files: &[(&str, &str)],
+    trace: bool,
+) -> Result<PathBuf, String> {
+    let mut parts: Vec<&str> = vec![top, if trace { "--trace" } else { "" }];
     for (name, text) in files {
         parts.push(name);
         parts.push(text);
@@ -212,7 +218,8 @@ pub fn verilator_build(prefix: &str, top: &str, files: &[(&str, &str)]) -> Resul
     run(
         Command::new("verilator")
             .current_dir(&tmp)
-            .args(["--cc", "--exe", "--build", "-O3", "--trace", "-j", "2"])
+            .args(["--cc", "--exe", "--build", "-O3", "-j", "2"])
+            .args(trace.then_some("--trace"))
             .args(["--top-module", top, "-Mdir", "obj"])
             .args(&paths),
         "verilator --build",
@@ -369,10 +376,13 @@ mod tests {
                     for (int i = 0; i < 6; i++) { top.clock = i & 1; top.eval(); }\n\
                     std::printf(\"%d\\n\", (int)top.q);\n    return 0;\n}\n";
         let files = [("counter.v", COUNTER), ("main.cpp", main)];
-        let exe = verilator_build("tools-test-", "counter", &files).unwrap();
+        let exe = verilator_build("tools-test-", "counter", &files, false).unwrap();
         let out = run(&mut Command::new(&exe), "counter harness").unwrap();
         assert_eq!(out.trim(), "3");
-        assert_eq!(verilator_build("tools-test-", "counter", &files), Ok(exe));
+        assert_eq!(
+            verilator_build("tools-test-", "counter", &files, false),
+            Ok(exe)
+        );
     }
 
     #[test]
