@@ -27,7 +27,6 @@ fn n3(rpm: f64, detune: f64) -> Experiment {
 /// for both speeds: the same Verilog serves them, compiled once): every cycle equal to the
 /// bit-true measurement, the phase within 2° of the model.
 fn n3_on_the_emitted_verilog_equals_the_bit_true_measurement(exp: &Experiment, freqs: &[f64]) {
-    // One configuration: the same Verilog serves both speeds.
     assert_eq!(exp.core_params(), n3_high_speed().core_params());
     let sim = verilated_for(exp).expect("verilator builds the emitted core");
     for &f in freqs {

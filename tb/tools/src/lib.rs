@@ -187,8 +187,9 @@ pub fn lint_verilog(top: &str, verilog: &str) -> Result<(), String> {
 /// `.vlt` waivers, the Verilog and the C++ harness, in the order Verilator should read them)
 /// with top module `top`, with `--trace` if `trace` (only a run that writes a VCD needs it:
 /// the tracing hooks cost about a sixth of the speed of every run, traced or not), built once
-/// per content and `trace` in `target/verilator/<prefix><hash>/` (`obj/V<top>`). Each call builds in a directory private to the process and the call and
-/// renames it into place, so parallel tests never see or write into a half-built one.
+/// per content and `trace` in `target/verilator/<prefix><hash>/` (`obj/V<top>`). Each call
+/// builds in a directory private to the process and the call and renames it into place, so
+/// parallel tests never see or write into a half-built one.
 pub fn verilator_build(
     prefix: &str,
     top: &str,
