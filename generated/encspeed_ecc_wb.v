@@ -939,6 +939,9 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
     localparam  limit_less_one_x1 = 32'h3fe;
     localparam  limit_less_one_x2 = 32'h7fe;
     localparam  limit_less_one_x4 = 32'hffe;
+    localparam  limit_less_two_x1 = 32'h3fd;
+    localparam  limit_less_two_x2 = 32'h7fd;
+    localparam  limit_less_two_x4 = 32'hffd;
     
     // Stub signals
     reg  sync_a$clock;
@@ -999,6 +1002,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
     reg  counter$z;
     reg  [31:0] counter$limit;
     reg  [31:0] counter$limit_less_one;
+    reg  [31:0] counter$limit_less_two;
     reg  [1:0] counter$cfg_z_mode;
     wire  [31:0] counter$position;
     wire  [31:0] counter$z_latch;
@@ -1172,6 +1176,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
     reg  [1:0] shift;
     reg  [31:0] limit;
     reg  [31:0] limit_less_one;
+    reg  [31:0] limit_less_two;
     
     // Sub module instances
     encspeed_ecc_wb$ecc$core$sync_a sync_a(
@@ -1249,6 +1254,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         .z(counter$z),
         .limit(counter$limit),
         .limit_less_one(counter$limit_less_one),
+        .limit_less_two(counter$limit_less_two),
         .cfg_z_mode(counter$cfg_z_mode),
         .position(counter$position),
         .z_latch(counter$z_latch),
@@ -1529,15 +1535,18 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         shift = shift_two;
         limit = limit_x4;
         limit_less_one = limit_less_one_x4;
+        limit_less_two = limit_less_two_x4;
         if (mode_reset$mode == mode_x1) begin
             shift = shift_zero;
             limit = limit_x1;
             limit_less_one = limit_less_one_x1;
+            limit_less_two = limit_less_two_x1;
         end
         else if (mode_reset$mode == mode_x2) begin
             shift = shift_one;
             limit = limit_x2;
             limit_less_one = limit_less_one_x2;
+            limit_less_two = limit_less_two_x2;
         end
         sync_a$reset = rst;
         sync_b$reset = rst;
@@ -1568,6 +1577,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         counter$z = filter_z$level_out;
         counter$limit = limit;
         counter$limit_less_one = limit_less_one;
+        counter$limit_less_two = limit_less_two;
         counter$cfg_z_mode = z_mode_reg$q;
         engine_reset = rst | decoder$first;
         step_counted = decoder$step & ~rst;
@@ -5788,7 +5798,7 @@ module encspeed_ecc_wb$ecc$core$cfg_error_reg(d,q,clock);
 endmodule // encspeed_ecc_wb$ecc$core$cfg_error_reg
 
 
-module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,limit_less_one,cfg_z_mode,position,z_latch,index,rev_error,rev_error_count,rev_fault);
+module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,limit_less_one,limit_less_two,cfg_z_mode,position,z_latch,index,rev_error,rev_error_count,rev_fault);
     
     // Module arguments
     input wire  clock;
@@ -5799,6 +5809,7 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
     input wire  z;
     input wire  [31:0] limit;
     input wire  [31:0] limit_less_one;
+    input wire  [31:0] limit_less_two;
     input wire  [1:0] cfg_z_mode;
     output reg  [31:0] position;
     output reg  [31:0] z_latch;
@@ -5810,7 +5821,7 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
     // Constant declarations
     localparam  pos_zero = 32'h0;
     localparam  pos_one = 32'h1;
-    localparam  pos_max = 32'hffffffff;
+    localparam  pos_max_less_one = 32'hfffffffe;
     localparam  low_mask = 32'hffff;
     localparam  low_max_less_one = 32'hfffe;
     localparam  low_width = 8'h10;
@@ -5865,6 +5876,15 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
     reg  rev_mixed$d;
     wire  rev_mixed$q;
     reg  rev_mixed$clock;
+    reg  rev_at_max$d;
+    wire  rev_at_max$q;
+    reg  rev_at_max$clock;
+    reg  rev_is_limit$d;
+    wire  rev_is_limit$q;
+    reg  rev_is_limit$clock;
+    reg  rev_is_limit_less_one$d;
+    wire  rev_is_limit_less_one$q;
+    reg  rev_is_limit_less_one$clock;
     reg  error_reg$d;
     wire  error_reg$q;
     reg  error_reg$clock;
@@ -5895,6 +5915,8 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
     reg  limit_low_all_ones;
     reg  limit_low_zero;
     reg  single;
+    reg  pair;
+    reg  rev_counts;
     reg  rise;
     reg  any_now;
     reg  [31:0] more_now;
@@ -5973,6 +5995,21 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
         .q(rev_mixed$q),
         .clock(rev_mixed$clock)
     );
+    encspeed_ecc_wb$ecc$core$counter$rev_at_max rev_at_max(
+        .d(rev_at_max$d),
+        .q(rev_at_max$q),
+        .clock(rev_at_max$clock)
+    );
+    encspeed_ecc_wb$ecc$core$counter$rev_is_limit rev_is_limit(
+        .d(rev_is_limit$d),
+        .q(rev_is_limit$q),
+        .clock(rev_is_limit$clock)
+    );
+    encspeed_ecc_wb$ecc$core$counter$rev_is_limit_less_one rev_is_limit_less_one(
+        .d(rev_is_limit_less_one$d),
+        .q(rev_is_limit_less_one$q),
+        .clock(rev_is_limit_less_one$clock)
+    );
     encspeed_ecc_wb$ecc$core$counter$error_reg error_reg(
         .d(error_reg$d),
         .q(error_reg$q),
@@ -6005,6 +6042,9 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
         rev_more$clock = clock;
         rev_over$clock = clock;
         rev_mixed$clock = clock;
+        rev_at_max$clock = clock;
+        rev_is_limit$clock = clock;
+        rev_is_limit_less_one$clock = clock;
         error_reg$clock = clock;
         error_count$clock = clock;
         fault_reg$clock = clock;
@@ -6022,6 +6062,9 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
         rev_more$d = rev_more$q;
         rev_over$d = rev_over$q;
         rev_mixed$d = rev_mixed$q;
+        rev_at_max$d = rev_at_max$q;
+        rev_is_limit$d = rev_is_limit$q;
+        rev_is_limit_less_one$d = rev_is_limit_less_one$q;
         error_reg$d = error_reg$q;
         error_count$d = error_count$q;
         fault_reg$d = fault_reg$q;
@@ -6029,6 +6072,7 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
         z_delay$d = z;
         z_prev$d = z_delay$q;
         single = limit == pos_zero;
+        pair = limit_less_one == pos_zero;
         low = position_reg$q & low_mask;
         high = position_reg$q >> low_width;
         plus_one = ((low + pos_one) & low_mask) | (high << low_width);
@@ -6078,13 +6122,14 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
         more_now = rev_more$q;
         over_now = rev_over$q;
         mixed_now = rev_mixed$q;
+        rev_counts = step & rev_any$q & ~rev_at_max$q;
+        if (rev_counts) begin
+            more_now = rev_more$q + pos_one;
+        end
         if (step) begin
             if (rev_any$q) begin
-                if (rev_more$q == pos_max) begin
+                if (rev_at_max$q) begin
                     over_now = 1'b1;
-                end
-                else begin
-                    more_now = rev_more$q + pos_one;
                 end
                 if (first) begin
                     mixed_now = 1'b1;
@@ -6097,16 +6142,22 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
                 mixed_now = 1'b0;
             end
         end
-        count_is_rev = rev_more$q == limit;
-        if (step) begin
-            if (rev_any$q) begin
-                if (rev_more$q != pos_max) begin
-                    count_is_rev = rev_more$q == limit_less_one;
-                end
-            end
-            else begin
-                count_is_rev = limit == pos_zero;
-            end
+        count_is_rev = rev_is_limit$q;
+        if (rev_counts) begin
+            count_is_rev = rev_is_limit_less_one$q;
+        end
+        if (step & ~rev_any$q) begin
+            count_is_rev = single;
+        end
+        if (rev_counts) begin
+            rev_is_limit$d = rev_is_limit_less_one$q;
+            rev_is_limit_less_one$d = rev_more$q == limit_less_two;
+            rev_at_max$d = rev_more$q == pos_max_less_one;
+        end
+        if ((step & ~rev_any$q) | rise | reset) begin
+            rev_is_limit$d = single;
+            rev_is_limit_less_one$d = pair;
+            rev_at_max$d = 1'b0;
         end
         bad = armed$q & (cfg_z_mode != mode_ignore) & any_now & ~mixed_now & (over_now | ~count_is_rev);
         if (step) begin
@@ -6411,6 +6462,63 @@ module encspeed_ecc_wb$ecc$core$counter$rev_any(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$counter$rev_any
+
+
+module encspeed_ecc_wb$ecc$core$counter$rev_at_max(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$counter$rev_at_max
+
+
+module encspeed_ecc_wb$ecc$core$counter$rev_is_limit(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$counter$rev_is_limit
+
+
+module encspeed_ecc_wb$ecc$core$counter$rev_is_limit_less_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$counter$rev_is_limit_less_one
 
 
 module encspeed_ecc_wb$ecc$core$counter$rev_mixed(d,q,clock);

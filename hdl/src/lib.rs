@@ -30,8 +30,6 @@ pub mod emit;
 pub mod estimator;
 pub mod frontend;
 pub mod sim;
-#[cfg(test)]
-mod test_support;
 pub mod top;
 pub mod verilog;
 

@@ -72,14 +72,15 @@ pub struct CounterState {
     pub rev_fault: bool,
 }
 
-/// The two constants the hardware block takes for counts per revolution `counts_per_rev`
-/// (0 standing for 2^C) at C = `position_bits`: limit = R − 1 and R − 2, both mod 2^C. The
-/// block compares with them instead of subtracting from R in the cycle.
-pub fn limits(counts_per_rev: u64, position_bits: u32) -> (u64, u64) {
+/// The three constants the hardware block takes for counts per revolution `counts_per_rev`
+/// (0 standing for 2^C) at C = `position_bits`: limit = R − 1, R − 2 and R − 3, all mod
+/// 2^C. The block compares with them instead of subtracting from R in the cycle.
+pub fn limits(counts_per_rev: u64, position_bits: u32) -> (u64, u64, u64) {
     let mask = max_of(position_bits);
     (
         counts_per_rev.wrapping_sub(1) & mask,
         counts_per_rev.wrapping_sub(2) & mask,
+        counts_per_rev.wrapping_sub(3) & mask,
     )
 }
 

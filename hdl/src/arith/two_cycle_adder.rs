@@ -138,24 +138,3 @@ impl<const W: usize> Logic for TwoCycleAdder<W> {
 pub fn two_cycle_adder_verilog<const W: usize>(module_name: &str) -> String {
     crate::verilog::default_block_verilog::<TwoCycleAdder<W>>(module_name)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn synthesises_and_lints_clean() {
-        crate::test_support::synthesises_and_lints(
-            "encspeed_two_cycle_adder",
-            TwoCycleAdder::<49>::default(),
-        );
-        crate::test_support::synthesises_and_lints(
-            "encspeed_two_cycle_adder_5",
-            TwoCycleAdder::<5>::default(),
-        );
-        crate::test_support::synthesises_and_lints(
-            "encspeed_two_cycle_adder_127",
-            TwoCycleAdder::<127>::default(),
-        );
-    }
-}

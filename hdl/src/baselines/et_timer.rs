@@ -114,22 +114,3 @@ impl<const N: usize> Logic for EtTimer<N> {
 pub fn et_timer_verilog<const N: usize>(module_name: &str) -> String {
     crate::verilog::default_block_verilog::<EtTimer<N>>(module_name)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_support::verilator_lint;
-
-    #[test]
-    fn synthesises() {
-        let mut uut = EtTimer::<24>::default();
-        uut.connect_all();
-        yosys_validate("encspeed_et_timer", &generate_verilog(&uut)).unwrap();
-    }
-
-    #[test]
-    fn verilator_lint_is_clean() {
-        verilator_lint("et_timer", &et_timer_verilog::<24>("et_timer"));
-        verilator_lint("et_timer", &et_timer_verilog::<2>("et_timer"));
-    }
-}

@@ -235,22 +235,3 @@ impl<const N: usize> Logic for MtCounter<N> {
 pub fn mt_counter_verilog<const N: usize>(module_name: &str) -> String {
     crate::verilog::default_block_verilog::<MtCounter<N>>(module_name)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_support::verilator_lint;
-
-    #[test]
-    fn synthesises() {
-        let mut uut = MtCounter::<24>::default();
-        uut.connect_all();
-        yosys_validate("encspeed_mt_counter", &generate_verilog(&uut)).unwrap();
-    }
-
-    #[test]
-    fn verilator_lint_is_clean() {
-        verilator_lint("mt_counter", &mt_counter_verilog::<24>("mt_counter"));
-        verilator_lint("mt_counter", &mt_counter_verilog::<2>("mt_counter"));
-    }
-}

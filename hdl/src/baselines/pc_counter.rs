@@ -165,22 +165,3 @@ impl<const N: usize> Logic for PcCounter<N> {
 pub fn pc_counter_verilog<const N: usize>(module_name: &str) -> String {
     crate::verilog::default_block_verilog::<PcCounter<N>>(module_name)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_support::verilator_lint;
-
-    #[test]
-    fn synthesises() {
-        let mut uut = PcCounter::<24>::default();
-        uut.connect_all();
-        yosys_validate("encspeed_pc_counter", &generate_verilog(&uut)).unwrap();
-    }
-
-    #[test]
-    fn verilator_lint_is_clean() {
-        verilator_lint("pc_counter", &pc_counter_verilog::<24>("pc_counter"));
-        verilator_lint("pc_counter", &pc_counter_verilog::<2>("pc_counter"));
-    }
-}

@@ -94,22 +94,3 @@ impl<const N: usize> Logic for WindowTimer<N> {
 pub fn window_timer_verilog<const N: usize>(module_name: &str) -> String {
     crate::verilog::default_block_verilog::<WindowTimer<N>>(module_name)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_support::verilator_lint;
-
-    #[test]
-    fn synthesises() {
-        let mut uut = WindowTimer::<24>::default();
-        uut.connect_all();
-        yosys_validate("encspeed_window_timer", &generate_verilog(&uut)).unwrap();
-    }
-
-    #[test]
-    fn verilator_lint_is_clean() {
-        verilator_lint("window_timer", &window_timer_verilog::<24>("window_timer"));
-        verilator_lint("window_timer", &window_timer_verilog::<2>("window_timer"));
-    }
-}

@@ -46,22 +46,3 @@ impl Logic for ConstCell {
         }
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn synthesises_and_lints_clean() {
-        let (map, _) = crate::test_support::maps();
-        let cell = ConstCell::new(map.reg("ID"));
-        crate::test_support::synthesises_and_lints("encspeed_const_cell", cell);
-    }
-
-    #[test]
-    #[should_panic(expected = "has no constant value")]
-    fn refuses_a_live_register() {
-        let (map, _) = crate::test_support::maps();
-        ConstCell::new(map.reg("POSITION"));
-    }
-}

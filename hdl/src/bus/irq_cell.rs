@@ -100,15 +100,3 @@ impl Logic for IrqCell {
         self.irq.next = (self.status.q.val() & self.enable.q.val()) != self.z32.val();
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn synthesises_and_lints_clean() {
-        let (map, _) = crate::test_support::maps();
-        let cell = IrqCell::new(map.reg("IRQ_ENABLE"), map.reg("IRQ_STATUS"));
-        crate::test_support::synthesises_and_lints("encspeed_irq_cell", cell);
-    }
-}

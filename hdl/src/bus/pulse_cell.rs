@@ -68,24 +68,3 @@ impl Logic for PulseCell {
         self.pulse.next = self.fired.q.val();
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use golden::bus::ecc_regmap::ECC_CTRL;
-
-    #[test]
-    fn synthesises_and_lints_clean() {
-        let (_, ecc) = crate::test_support::maps();
-        let ctrl = ecc.iter().find(|r| r.offset == ECC_CTRL).unwrap();
-        let cell = PulseCell::new(ctrl, ctrl.field("IDENT_ARM").mask());
-        crate::test_support::synthesises_and_lints("encspeed_pulse_cell", cell);
-    }
-
-    #[test]
-    #[should_panic(expected = "is not a set of its fields")]
-    fn refuses_bits_outside_the_fields() {
-        let (map, _) = crate::test_support::maps();
-        PulseCell::new(map.reg("STATUS"), 1 << 31);
-    }
-}

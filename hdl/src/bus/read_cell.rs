@@ -45,7 +45,9 @@ pub struct ReadCell<const W: usize> {
 }
 
 impl<const W: usize> ReadCell<W> {
-    fn build(reg: &Register, lsb: u32, signed: bool) -> Self {
+    /// The cell of `reg` with its W bits at bit `lsb` of the word (`signed`: sign-extended,
+    /// at bit 0 only). Panics on a field that does not fit the 32-bit word.
+    pub fn build(reg: &Register, lsb: u32, signed: bool) -> Self {
         assert!((1..=32).contains(&W), "W = {W}: 1..=32");
         assert!(
             W as u32 + lsb <= 32,
@@ -122,41 +124,5 @@ impl<const W: usize> Logic for ReadCell<W> {
         if self.adr.val() == self.offset.val() {
             self.rdata.next = self.x.val() << self.sh_lsb.val();
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use golden::bus::ecc_regmap::{IDENT_P, IDENT_SUM_T_W2};
-
-    #[test]
-    fn synthesises_and_lints_clean_at_each_use() {
-        let (map, ecc) = crate::test_support::maps();
-        let at = |off: u32| ecc.iter().find(|r| r.offset == off).unwrap();
-        use crate::test_support::synthesises_and_lints as lint;
-        lint(
-            "encspeed_read_cell_1",
-            ReadCell::<1>::new(map.reg("GLITCH_COUNT")),
-        );
-        lint(
-            "encspeed_read_cell_32",
-            ReadCell::<32>::new(map.reg("STATUS")),
-        );
-        lint(
-            "encspeed_read_cell_p",
-            ReadCell::<16>::field(at(IDENT_P), "P_MAX"),
-        );
-        lint(
-            "encspeed_read_cell_s",
-            ReadCell::<8>::signed(at(IDENT_SUM_T_W2)),
-        );
-    }
-
-    #[test]
-    #[should_panic(expected = "exceed the word")]
-    fn refuses_a_value_past_bit_31() {
-        let (map, _) = crate::test_support::maps();
-        ReadCell::<16>::build(map.reg("STATUS"), 20, false);
     }
 }

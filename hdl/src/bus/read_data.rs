@@ -52,13 +52,3 @@ impl Logic for ReadData {
         self.wb_dat_o.next = self.dat.q.val();
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn synthesises_and_lints_clean() {
-        crate::test_support::synthesises_and_lints("encspeed_read_data", ReadData::default());
-    }
-}

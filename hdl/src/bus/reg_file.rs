@@ -128,15 +128,3 @@ impl Logic for RegFile {
         self.wb_dat_o.next = self.read.wb_dat_o.val();
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn synthesises_and_lints_clean() {
-        let (map, _) = crate::test_support::maps();
-        let file = RegFile::new(map.reg("IRQ_ENABLE"), map.reg("IRQ_STATUS"));
-        crate::test_support::synthesises_and_lints("encspeed_reg_file", file);
-    }
-}

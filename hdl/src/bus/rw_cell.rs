@@ -82,25 +82,3 @@ impl<const W: usize> Logic for RwCell<W> {
         self.q.next = self.word.q.val().get_bits::<W>(0);
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use golden::bus::ecc_regmap::ECC_C;
-
-    #[test]
-    fn synthesises_and_lints_clean_narrow_and_full() {
-        let (map, ecc) = crate::test_support::maps();
-        let ctrl = RwCell::<4>::new(map.reg("CTRL"));
-        crate::test_support::synthesises_and_lints("encspeed_rw_cell_4", ctrl);
-        let c = RwCell::<32>::new(ecc.iter().find(|r| r.offset == ECC_C).unwrap());
-        crate::test_support::synthesises_and_lints("encspeed_rw_cell_32", c);
-    }
-
-    #[test]
-    #[should_panic(expected = "outside bits")]
-    fn refuses_fields_above_w() {
-        let (map, _) = crate::test_support::maps();
-        RwCell::<2>::new(map.reg("CTRL"));
-    }
-}

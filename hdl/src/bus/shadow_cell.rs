@@ -107,22 +107,3 @@ impl<const S: usize> Logic for ShadowCell<S> {
         }
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn synthesises_and_lints_clean_narrowest_and_widest() {
-        let (map, _) = crate::test_support::maps();
-        let (lo, hi) = (map.reg("SPEED_N1_LO"), map.reg("SPEED_N1_HI"));
-        crate::test_support::synthesises_and_lints(
-            "encspeed_shadow_11",
-            ShadowCell::<11>::new(lo, hi),
-        );
-        crate::test_support::synthesises_and_lints(
-            "encspeed_shadow_64",
-            ShadowCell::<64>::new(lo, hi),
-        );
-    }
-}

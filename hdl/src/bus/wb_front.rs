@@ -127,13 +127,3 @@ impl Logic for WbFront {
         self.ones.next = self.wb_dat_i.val() & self.l_lanes.val();
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn synthesises_and_lints_clean() {
-        crate::test_support::synthesises_and_lints("encspeed_wb_front", WbFront::default());
-    }
-}

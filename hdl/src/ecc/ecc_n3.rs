@@ -349,17 +349,3 @@ pub fn ecc_n3_verilog<const S: usize>(module_name: &str) -> String {
     uut.connect_all();
     crate::verilog::named_verilog(&uut, module_name)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_support::verilator_lint;
-
-    #[test]
-    fn synthesises_and_lints() {
-        let mut uut = EccN3::<41>::default();
-        uut.connect_all();
-        yosys_validate("encspeed_ecc_n3", &generate_verilog(&uut)).unwrap();
-        verilator_lint("ecc_n3", &ecc_n3_verilog::<41>("ecc_n3"));
-    }
-}

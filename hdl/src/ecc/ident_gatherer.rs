@@ -265,28 +265,3 @@ pub fn ident_gatherer_verilog<const A: usize, const T: usize, const W: usize>(
     uut.connect_all();
     crate::verilog::named_verilog(&uut, module_name)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_support::verilator_lint;
-
-    #[test]
-    fn synthesises() {
-        let mut uut = IdentGatherer::<10, 32, 66>::new(1024);
-        uut.connect_all();
-        yosys_validate("encspeed_ident_gatherer", &generate_verilog(&uut)).unwrap();
-    }
-
-    #[test]
-    fn verilator_lint_is_clean() {
-        verilator_lint(
-            "ident_gatherer",
-            &ident_gatherer_verilog::<10, 32, 66>(1024, "ident_gatherer"),
-        );
-        verilator_lint(
-            "ident_gatherer",
-            &ident_gatherer_verilog::<2, 8, 34>(4, "ident_gatherer"),
-        );
-    }
-}

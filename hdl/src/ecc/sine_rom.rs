@@ -73,23 +73,3 @@ pub fn sine_rom_verilog<const A: usize, const D: usize>(lines: u32, module_name:
     uut.connect_all();
     crate::verilog::named_verilog(&uut, module_name)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_support::verilator_lint;
-
-    #[test]
-    fn synthesises() {
-        let mut uut = SineRom::<10, 16>::new(1000);
-        uut.connect_all();
-        yosys_validate("encspeed_sine_rom", &generate_verilog(&uut)).unwrap();
-    }
-
-    #[test]
-    fn verilator_lint_is_clean() {
-        verilator_lint("sine_rom", &sine_rom_verilog::<10, 16>(1024, "sine_rom"));
-        verilator_lint("sine_rom", &sine_rom_verilog::<10, 16>(1000, "sine_rom"));
-        verilator_lint("sine_rom", &sine_rom_verilog::<2, 4>(4, "sine_rom"));
-    }
-}

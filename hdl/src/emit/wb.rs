@@ -238,19 +238,3 @@ clears a bit, except that an event at the same edge wins. `irq` = (`IRQ_STATUS` 
 pub fn default_registers_markdown() -> String {
     registers_markdown(&Params::new(Spec::default()).expect("default parameters are valid"))
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn markdown_keeps_every_register_and_has_one_title() {
-        let p = Params::new(Spec::default()).unwrap();
-        let md = registers_markdown(&p);
-        assert_eq!(md.lines().filter(|l| l.starts_with("# ")).count(), 1);
-        for (name, off) in regmap::LAYOUT {
-            assert!(md.contains(&format!("### {name} (0x{off:02X})")), "{name}");
-        }
-        assert_eq!(md, default_registers_markdown());
-    }
-}

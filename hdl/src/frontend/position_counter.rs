@@ -3,8 +3,8 @@
 //! check of the count of every revolution. Bit-true model:
 //! [`golden::frontend::PositionCounter`].
 //!
-//! Per clock edge (R = counts per revolution, 2^C allowed; the ports carry limit = R − 1
-//! and R − 2, both mod 2^C, which the core has as constants for each decoding mode):
+//! Per clock edge (R = counts per revolution, 2^C allowed; the ports carry limit = R − 1,
+//! R − 2 and R − 3, all mod 2^C, which the core has as constants for each decoding mode):
 //! 1. Index: rise = z_delay ∧ ¬z_prev, where z_delay is `z` one edge ago and z_prev two. The
 //!    extra delay matches the decoder's latency: `z` is taken in the timing of the decoder's
 //!    `a`/`b` inputs, so the index edge and the step of the same encoder transition are
@@ -40,12 +40,17 @@
 //!    (sticky) and increments `rev_error_count` (saturating). An interval with a reversal is
 //!    not checked (a shaft swinging back across the index), nor one without steps (index
 //!    noise at rest); for a fault-free encoder a one-direction interval always has exactly
-//!    R steps, because the index rises on entering the Z window from either side.
+//!    R steps, because the index rises on entering the Z window from either side. The
+//!    count's comparisons (= 2^C − 1, = limit, = limit − 1) are flags registered with it and
+//!    set from comparisons on the registers a step earlier (which is why the block takes
+//!    R − 3): the decoder's step only chooses among flags, a few logic levels from the error
+//!    counter, where a C-bit comparison behind the step's multiplexer was the core's
+//!    slowest path on the iCE40.
 //!
 //! Ports: `step`, `forward`, `first` (from the decoder: `first` is high with `step` when
 //! no step has been made since this block's reset or the step is against the last one; the
 //! core resets the decoder with this block), `z` (filtered index level, one cycle ahead
-//! of `step`), `limit[C-1:0]` (R − 1), `limit_less_one[C-1:0]` (R − 2), `cfg_z_mode[1:0]`
+//! of `step`), `limit[C-1:0]` (R − 1), `limit_less_one[C-1:0]` (R − 2), `limit_less_two[C-1:0]` (R − 3), `cfg_z_mode[1:0]`
 //! (0 ignore, 1 reset, 2 latch, 3 latch then reset). Registered outputs: `position[C-1:0]`, `z_latch[C-1:0]`, `index`
 //! (one cycle per index edge processed), `rev_error` (sticky), `rev_error_count[G-1:0]`.
 //!
@@ -75,8 +80,11 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     pub z: Signal<In, Bit>,
     /// R − 1 mod 2^C, R the counts per revolution (2^C − 1 for R = 2^C).
     pub limit: Signal<In, Bits<C>>,
-    /// R − 2 mod 2^C (the core feeds both as constants: no subtraction in the block).
+    /// R − 2 mod 2^C (the core feeds the three limits as constants: no subtraction in the
+    /// block).
     pub limit_less_one: Signal<In, Bits<C>>,
+    /// R − 3 mod 2^C.
+    pub limit_less_two: Signal<In, Bits<C>>,
     /// 0 ignore Z, 1 reset on Z, 2 latch on Z, 3 latch then reset.
     pub cfg_z_mode: Signal<In, Bits<2>>,
     /// Position, 0..R.
@@ -110,6 +118,12 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     rev_more: DFF<Bits<C>>,
     rev_over: DFF<Bit>,
     rev_mixed: DFF<Bit>,
+    /// `rev_more` = 2^C − 1: the next step overflows the count.
+    rev_at_max: DFF<Bit>,
+    /// `rev_more` = limit: the interval so far has R steps.
+    rev_is_limit: DFF<Bit>,
+    /// `rev_more` = limit − 1: one more step makes R.
+    rev_is_limit_less_one: DFF<Bit>,
     error_reg: DFF<Bit>,
     error_count: DFF<Bits<G>>,
     fault_reg: DFF<Bit>,
@@ -140,6 +154,11 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     limit_low_zero: Signal<Local, Bit>,
     /// R = 1: position 0 is also the limit.
     single: Signal<Local, Bit>,
+    /// R = 2: a count of one step is one short of R.
+    pair: Signal<Local, Bit>,
+    /// This cycle's step adds one to `rev_more` (an interval already begun, not at its
+    /// overflow).
+    rev_counts: Signal<Local, Bit>,
     rise: Signal<Local, Bit>,
     any_now: Signal<Local, Bit>,
     more_now: Signal<Local, Bits<C>>,
@@ -148,7 +167,7 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     bad: Signal<Local, Bit>,
     pos_zero: Constant<Bits<C>>,
     pos_one: Constant<Bits<C>>,
-    pos_max: Constant<Bits<C>>,
+    pos_max_less_one: Constant<Bits<C>>,
     /// The low half's bits, ⌈C/2⌉ of them.
     low_mask: Constant<Bits<C>>,
     /// The low half's largest value less one.
@@ -182,6 +201,7 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             z: Default::default(),
             limit: Default::default(),
             limit_less_one: Default::default(),
+            limit_less_two: Default::default(),
             cfg_z_mode: Default::default(),
             position: Default::default(),
             z_latch: Default::default(),
@@ -203,6 +223,9 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             rev_more: Default::default(),
             rev_over: Default::default(),
             rev_mixed: Default::default(),
+            rev_at_max: Default::default(),
+            rev_is_limit: Default::default(),
+            rev_is_limit_less_one: Default::default(),
             error_reg: Default::default(),
             error_count: Default::default(),
             fault_reg: Default::default(),
@@ -225,6 +248,8 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             limit_low_all_ones: Default::default(),
             limit_low_zero: Default::default(),
             single: Default::default(),
+            pair: Default::default(),
+            rev_counts: Default::default(),
             rise: Default::default(),
             any_now: Default::default(),
             more_now: Default::default(),
@@ -233,7 +258,7 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             bad: Default::default(),
             pos_zero: Constant::new(0.into()),
             pos_one: Constant::new(1.into()),
-            pos_max: Constant::new(((1u64 << C) - 1).into()),
+            pos_max_less_one: Constant::new(((1u64 << C) - 2).into()),
             low_mask: Constant::new(((1u64 << low) - 1).into()),
             low_max_less_one: Constant::new(((1u64 << low) - 2).into()),
             low_width: Constant::new((low as u64).into()),
@@ -268,6 +293,9 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
             rev_more,
             rev_over,
             rev_mixed,
+            rev_at_max,
+            rev_is_limit,
+            rev_is_limit_less_one,
             error_reg,
             error_count,
             fault_reg
@@ -278,6 +306,7 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
 
         // The stepped position, modulo R, and its flags.
         self.single.next = self.limit.val() == self.pos_zero.val();
+        self.pair.next = self.limit_less_one.val() == self.pos_zero.val();
         // p ± 1 in two halves: the high half adds the registered carry (low half all ones)
         // or subtracts the registered borrow (low half 0), so each carry chain is half as
         // long and the two run side by side.
@@ -341,12 +370,14 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
         self.more_now.next = self.rev_more.q.val();
         self.over_now.next = self.rev_over.q.val();
         self.mixed_now.next = self.rev_mixed.q.val();
+        self.rev_counts.next = self.step.val() & self.rev_any.q.val() & !self.rev_at_max.q.val();
+        if self.rev_counts.val() {
+            self.more_now.next = self.rev_more.q.val() + self.pos_one.val();
+        }
         if self.step.val() {
             if self.rev_any.q.val() {
-                if self.rev_more.q.val() == self.pos_max.val() {
+                if self.rev_at_max.q.val() {
                     self.over_now.next = true;
-                } else {
-                    self.more_now.next = self.rev_more.q.val() + self.pos_one.val();
                 }
                 // A reversal after a step of this interval: the interval mixes directions.
                 if self.first.val() {
@@ -359,18 +390,31 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
                 self.mixed_now.next = false;
             }
         }
-        // more_now = limit, compared on the registers (so that the incrementer and the
-        // comparison are not in series): more + 1 = R − 1 is more = R − 2 when more is not
-        // all ones (all ones does not increment: it overflows); a first step makes it 0.
-        self.count_is_rev.next = self.rev_more.q.val() == self.limit.val();
-        if self.step.val() {
-            if self.rev_any.q.val() {
-                if self.rev_more.q.val() != self.pos_max.val() {
-                    self.count_is_rev.next = self.rev_more.q.val() == self.limit_less_one.val();
-                }
-            } else {
-                self.count_is_rev.next = self.limit.val() == self.pos_zero.val();
-            }
+        // more_now = limit, from flags registered with `rev_more` (its comparisons with
+        // limit, limit − 1 and 2^C − 1 made a cycle early, on the registers), so that no
+        // C-bit comparison lies between the decoder's step and the error counter: an
+        // increment makes more + 1 = limit exactly when more = limit − 1 (all ones does not
+        // increment: it overflows); a first step makes more 0, which is limit when R = 1.
+        self.count_is_rev.next = self.rev_is_limit.q.val();
+        if self.rev_counts.val() {
+            self.count_is_rev.next = self.rev_is_limit_less_one.q.val();
+        }
+        if self.step.val() & !self.rev_any.q.val() {
+            self.count_is_rev.next = self.single.val();
+        }
+        // The flags of the next `rev_more`: after an increment, more + 1 = limit − 1 is
+        // more = limit − 2 and more + 1 = 2^C − 1 is more = 2^C − 2; when it restarts at 0
+        // (first step, index edge, reset), 0 = limit is R = 1, 0 = limit − 1 is R = 2, and
+        // 0 is not 2^C − 1.
+        if self.rev_counts.val() {
+            self.rev_is_limit.d.next = self.rev_is_limit_less_one.q.val();
+            self.rev_is_limit_less_one.d.next = self.rev_more.q.val() == self.limit_less_two.val();
+            self.rev_at_max.d.next = self.rev_more.q.val() == self.pos_max_less_one.val();
+        }
+        if (self.step.val() & !self.rev_any.q.val()) | self.rise.val() | self.reset.val() {
+            self.rev_is_limit.d.next = self.single.val();
+            self.rev_is_limit_less_one.d.next = self.pair.val();
+            self.rev_at_max.d.next = false;
         }
         // A checked interval whose count is not R.
         self.bad.next = self.armed.q.val()
@@ -462,80 +506,4 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
 /// The Verilog of a [`PositionCounter`], top module named `module_name`.
 pub fn position_counter_verilog<const C: usize, const G: usize>(module_name: &str) -> String {
     crate::verilog::default_block_verilog::<PositionCounter<C, G>>(module_name)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_support::verilator_lint;
-
-    /// Reset at edge 0, then (step, forward, z) with R = `cpr`: positions after each edge.
-    fn run(cpr: u64, z_mode: u64, ins: &[(u8, u8, u8)]) -> Vec<(u64, bool)> {
-        let mut uut = PositionCounter::<4, 2>::default();
-        uut.connect_all();
-        let mut out = vec![];
-        // The decoder's `first`: no step since reset, or against the last step.
-        let mut last: Option<bool> = None;
-        for k in 0..=ins.len() {
-            let (s, f, z) = if k == 0 { (0, 0, 0) } else { ins[k - 1] };
-            uut.reset.next = k == 0;
-            uut.step.next = s == 1;
-            uut.forward.next = f == 1;
-            uut.first.next = s == 1 && last != Some(f == 1);
-            if k == 0 {
-                last = None;
-            } else if s == 1 {
-                last = Some(f == 1);
-            }
-            uut.z.next = z == 1;
-            let (limit, limit_less_one) = golden::frontend::position_counter::limits(cpr, 4);
-            uut.limit.next = limit.into();
-            uut.limit_less_one.next = limit_less_one.into();
-            uut.cfg_z_mode.next = z_mode.into();
-            uut.clock.next = Clock { clk: false };
-            assert!(simulate(&mut uut, 100));
-            uut.clock.next = Clock { clk: true };
-            assert!(simulate(&mut uut, 100));
-            if k > 0 {
-                out.push((uut.position.val().to_u64(), uut.index.val()));
-            }
-        }
-        out
-    }
-
-    #[test]
-    fn wraps_and_resets_on_the_index() {
-        // R = 3: forward 1 2 0 1, backward 0 2. R = 0 is 2^4 = 16: backward from 0 to 15.
-        let f = (1, 1, 0);
-        let b = (1, 0, 0);
-        let pos = |o: Vec<(u64, bool)>| o.iter().map(|p| p.0).collect::<Vec<_>>();
-        assert_eq!(pos(run(3, 0, &[f, f, f, f, b, b])), [1, 2, 0, 1, 0, 2]);
-        assert_eq!(pos(run(0, 0, &[b, b, f])), [15, 14, 15]);
-        // z sampled high at edge 3 (low at 1, 2): the rise is processed at edge 4, with the
-        // step of that edge: position 0 instead of 4.
-        let got = run(10, 1, &[f, f, (1, 1, 1), f, f]);
-        assert_eq!(
-            got,
-            [(1, false), (2, false), (3, false), (0, true), (1, false)]
-        );
-    }
-
-    #[test]
-    fn synthesises() {
-        let mut uut = PositionCounter::<16, 8>::default();
-        uut.connect_all();
-        yosys_validate("encspeed_position_counter", &generate_verilog(&uut)).unwrap();
-    }
-
-    #[test]
-    fn verilator_lint_is_clean() {
-        verilator_lint(
-            "position_counter",
-            &position_counter_verilog::<16, 8>("position_counter"),
-        );
-        verilator_lint(
-            "position_counter",
-            &position_counter_verilog::<1, 1>("position_counter"),
-        );
-    }
 }

@@ -103,22 +103,3 @@ pub fn build_ecc_wb(p: &Params) -> Result<Box<dyn EccWbSim>, String> {
     // The width dispatch of `crate::sim::ecc_sim::build_ecc`.
     Ok(crate::sim::ecc_sim::ecc_width!(p.counter_bits(), driven, p))
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use golden::params::Spec;
-
-    #[test]
-    fn refuses_line_counts_the_sine_table_cannot_hold() {
-        let p = Params::new(Spec {
-            lines: 1000 + 2,
-            ..Spec::default()
-        })
-        .unwrap();
-        let e = build_ecc_wb(&p)
-            .err()
-            .expect("K = 1002 is not a multiple of 4");
-        assert!(e.contains("encspeed_ecc"), "{e}");
-    }
-}

@@ -175,9 +175,10 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     engine_reset: Signal<Local, Bit>,
     dt_eff: Signal<Local, Bits<N>>,
     shift: Signal<Local, Bits<2>>,
-    /// R − 1 and R − 2 of the decoding mode, for the position counter.
+    /// R − 1, R − 2 and R − 3 of the decoding mode, for the position counter.
     limit: Signal<Local, Bits<C>>,
     limit_less_one: Signal<Local, Bits<C>>,
+    limit_less_two: Signal<Local, Bits<C>>,
     n_zero: Constant<Bits<N>>,
     n_one: Constant<Bits<N>>,
     min_dt: Constant<Bits<N>>,
@@ -196,6 +197,9 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     limit_less_one_x1: Constant<Bits<C>>,
     limit_less_one_x2: Constant<Bits<C>>,
     limit_less_one_x4: Constant<Bits<C>>,
+    limit_less_two_x1: Constant<Bits<C>>,
+    limit_less_two_x2: Constant<Bits<C>>,
+    limit_less_two_x4: Constant<Bits<C>>,
 }
 
 impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
@@ -204,11 +208,11 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
     pub fn new(p: &Params) -> Self {
         assert_eq!(p.counter_bits() as usize, N, "counter width mismatch");
         assert!(P == 2 * N + 1 && S == N + F + 1, "derived widths");
-        // R − 1 and R − 2 (mod 2^C) of each decoding mode.
-        let limits = |shift: u32| -> (Bits<C>, Bits<C>) {
-            let (l, l1) =
+        // R − 1, R − 2 and R − 3 (mod 2^C) of each decoding mode.
+        let limits = |shift: u32| -> (Bits<C>, Bits<C>, Bits<C>) {
+            let (l, l1, l2) =
                 golden::frontend::position_counter::limits(p.counts_per_rev(shift), C as u32);
-            (l.into(), l1.into())
+            (l.into(), l1.into(), l2.into())
         };
         Self {
             clock: Default::default(),
@@ -299,6 +303,7 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             shift: Default::default(),
             limit: Default::default(),
             limit_less_one: Default::default(),
+            limit_less_two: Default::default(),
             n_zero: Constant::new(0.into()),
             n_one: Constant::new(1.into()),
             min_dt: Constant::new(MIN_DT_CYCLES.into()),
@@ -317,6 +322,9 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             limit_less_one_x1: Constant::new(limits(0).1),
             limit_less_one_x2: Constant::new(limits(1).1),
             limit_less_one_x4: Constant::new(limits(2).1),
+            limit_less_two_x1: Constant::new(limits(0).2),
+            limit_less_two_x2: Constant::new(limits(1).2),
+            limit_less_two_x4: Constant::new(limits(2).2),
         }
     }
 }
@@ -375,14 +383,17 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.shift.next = self.shift_two.val();
         self.limit.next = self.limit_x4.val();
         self.limit_less_one.next = self.limit_less_one_x4.val();
+        self.limit_less_two.next = self.limit_less_two_x4.val();
         if self.mode_reset.mode.val() == self.mode_x1.val() {
             self.shift.next = self.shift_zero.val();
             self.limit.next = self.limit_x1.val();
             self.limit_less_one.next = self.limit_less_one_x1.val();
+            self.limit_less_two.next = self.limit_less_two_x1.val();
         } else if self.mode_reset.mode.val() == self.mode_x2.val() {
             self.shift.next = self.shift_one.val();
             self.limit.next = self.limit_x2.val();
             self.limit_less_one.next = self.limit_less_one_x2.val();
+            self.limit_less_two.next = self.limit_less_two_x2.val();
         }
 
         // Front end.
@@ -417,6 +428,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.counter.z.next = self.filter_z.level_out.val();
         self.counter.limit.next = self.limit.val();
         self.counter.limit_less_one.next = self.limit_less_one.val();
+        self.counter.limit_less_two.next = self.limit_less_two.val();
         self.counter.cfg_z_mode.next = self.z_mode_reg.q.val();
 
         // The first step of a direction (after reset or a reversal) restarts the estimator
@@ -566,24 +578,5 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.mt_t.next = self.mt.t.val();
         self.mt_negative.next = self.mt.negative.val();
         self.dt_active.next = self.dt_reg.q.val();
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn synthesises() {
-        let p = Params::new(golden::params::Spec {
-            counter_bits: 12,
-            dt_cycles: 1000,
-            timeout_s: 1e-3,
-            ..Default::default()
-        })
-        .unwrap();
-        let mut uut = EncspeedCore::<12, 25, 29>::new(&p);
-        uut.connect_all();
-        yosys_validate("encspeed_core", &generate_verilog(&uut)).unwrap();
     }
 }

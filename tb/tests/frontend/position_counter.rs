@@ -113,9 +113,11 @@ fn rust_hdl(stim: &[CounterInputs]) -> Vec<CounterOutputs> {
             uut.forward.next = i.forward;
             uut.first.next = first;
             uut.z.next = i.z;
-            let (limit, limit_less_one) = limits(i.counts_per_rev, POSITION_BITS as u32);
+            let (limit, limit_less_one, limit_less_two) =
+                limits(i.counts_per_rev, POSITION_BITS as u32);
             uut.limit.next = limit.into();
             uut.limit_less_one.next = limit_less_one.into();
+            uut.limit_less_two.next = limit_less_two.into();
             uut.cfg_z_mode.next = u64::from(i.cfg_z_mode).into();
             common::edge(&mut uut, |u, v| u.clock.next = Clock { clk: v });
             CounterOutputs {
@@ -188,6 +190,7 @@ fn emitted_verilog_equals_golden_in_icarus() {
                 u64::from(i.z),
                 limits(i.counts_per_rev, POSITION_BITS as u32).0,
                 limits(i.counts_per_rev, POSITION_BITS as u32).1,
+                limits(i.counts_per_rev, POSITION_BITS as u32).2,
                 u64::from(i.cfg_z_mode),
             ]
         })
@@ -204,6 +207,7 @@ fn emitted_verilog_equals_golden_in_icarus() {
             ("z", 1),
             ("limit", POSITION_BITS),
             ("limit_less_one", POSITION_BITS),
+            ("limit_less_two", POSITION_BITS),
             ("cfg_z_mode", 2),
         ],
         &[
