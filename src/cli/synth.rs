@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! `encspeed synth`: the resource and timing report of the shipped tops. For each top of
 //! `hdl::Top::ALL` and each device, yosys `synth_ice40` (with `-dsp` where the device has
-//! DSPs) gives the cells, and nextpnr-ice40 places and routes the top inside
-//! `tools::fpga`'s boundary wrapper (every port registered, so a top of any width places on
-//! any package) once per seed, with the clock constrained to the generation clock. The
+//! DSPs) or `synth_ecp5` gives the cells, and nextpnr-ice40 or nextpnr-ecp5 places and routes
+//! the top inside `tools::fpga`'s boundary wrapper (every port registered, so a top of any
+//! width places on any package) once per seed, with the clock constrained to the generation
+//! clock. The ECP5 devices are in `all` when nextpnr-ecp5 is installed. The
 //! report is a Markdown table (`--out`, default `target/synth/report.md`), also printed; an
 //! `--out` file that holds the [`BEGIN`]/[`END`] markers (docs/resources.md) keeps its text
 //! around them.
@@ -19,31 +20,55 @@ use golden::params::Params;
 use hdl::emit::tops::Top;
 use std::fmt::Write;
 use std::path::PathBuf;
-use tools::fpga::{self, Cells, Routed};
+use tools::fpga::{self, Cells, Family, Routed};
 
 use super::spec::SpecArgs;
 use super::Outcome;
 
-/// An iCE40 the report covers: nextpnr-ice40 device and package, and whether yosys may map
-/// multipliers to its DSPs.
+/// A device the report covers: its family, nextpnr's device option and package, and
+/// whether yosys may map multipliers to its DSPs (`synth_ice40 -dsp`; `synth_ecp5` always
+/// does).
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Device {
     name: &'static str,
+    family: Family,
+    /// nextpnr's `--<device>` option.
+    nextpnr: &'static str,
     package: &'static str,
     dsp: bool,
 }
 
-/// iCE40HX8K-CT256 (7 680 logic cells, 32 block RAMs, no DSP) and iCE40UP5K-SG48 (5 280
-/// logic cells, 30 block RAMs, 8 SB_MAC16).
-const DEVICES: [Device; 2] = [
+/// iCE40HX8K-CT256 (7 680 logic cells, 32 block RAMs, no DSP), iCE40UP5K-SG48 (5 280 logic
+/// cells, 30 block RAMs, 8 SB_MAC16), and the ECP5 LFE5U-25F-6BG256 (24 288 LUT4, 56
+/// DP16KD, 28 MULT18X18D) and LFE5U-85F-6BG381 (83 640 LUT4, 208 DP16KD, 156 MULT18X18D;
+/// the ULX3S board's), both at nextpnr-ecp5's default speed grade 6, the slowest.
+const DEVICES: [Device; 4] = [
     Device {
         name: "hx8k",
+        family: Family::Ice40,
+        nextpnr: "hx8k",
         package: "ct256",
         dsp: false,
     },
     Device {
         name: "up5k",
+        family: Family::Ice40,
+        nextpnr: "up5k",
         package: "sg48",
+        dsp: true,
+    },
+    Device {
+        name: "ecp5-25f",
+        family: Family::Ecp5,
+        nextpnr: "25k",
+        package: "CABGA256",
+        dsp: true,
+    },
+    Device {
+        name: "ecp5-85f",
+        family: Family::Ecp5,
+        nextpnr: "85k",
+        package: "CABGA381",
         dsp: true,
     },
 ];
@@ -57,7 +82,9 @@ pub struct SynthArgs {
     /// the `encspeed_` prefix (core, wb, ecc, ecc_wb).
     #[arg(long, default_value = "all")]
     top: String,
-    /// The devices: `all`, or a comma-separated list of hx8k (CT256) and up5k (SG48).
+    /// The devices: `all` (the iCE40s, and the ECP5s when nextpnr-ecp5 is installed), or a
+    /// comma-separated list of hx8k (CT256), up5k (SG48), ecp5-25f (CABGA256) and ecp5-85f
+    /// (CABGA381).
     #[arg(long, default_value = "all")]
     device: String,
     /// nextpnr placement seeds, comma-separated; one place and route per seed.
@@ -90,17 +117,27 @@ fn tops(list: &str) -> Result<Vec<Top>, String> {
         .collect()
 }
 
-/// The devices named by `--device`.
-fn devices(list: &str) -> Result<Vec<Device>, String> {
+/// The devices named by `--device`; `all` leaves out a family whose nextpnr is not
+/// installed (`installed`), a device named explicitly never is.
+fn devices(list: &str, installed: impl Fn(Family) -> bool) -> Result<Vec<Device>, String> {
     if list == "all" {
-        return Ok(DEVICES.to_vec());
+        return Ok(DEVICES
+            .into_iter()
+            .filter(|d| installed(d.family))
+            .collect());
     }
     list.split(',')
         .map(|name| {
             DEVICES
                 .into_iter()
                 .find(|d| d.name == name.trim())
-                .ok_or_else(|| format!("unknown device `{name}` (hx8k or up5k)"))
+                .ok_or_else(|| {
+                    let known: Vec<&str> = DEVICES.iter().map(|d| d.name).collect();
+                    format!(
+                        "unknown device `{name}` (the devices: {})",
+                        known.join(", ")
+                    )
+                })
         })
         .collect()
 }
@@ -117,7 +154,7 @@ struct Row {
 /// `encspeed synth`.
 pub fn run(args: &SynthArgs) -> Outcome {
     let tops = tops(&args.top).map_err(|e| (2, e))?;
-    let devices = devices(&args.device).map_err(|e| (2, e))?;
+    let devices = devices(&args.device, Family::installed).map_err(|e| (2, e))?;
     if args.seeds.is_empty() {
         return Err((2, "--seeds: give at least one seed".into()));
     }
@@ -187,20 +224,23 @@ fn place_and_route(p: &Params, top: Top, device: Device, seeds: &[u32]) -> Resul
     let boundary = format!("{}_boundary", top.module());
     // The cells of the top alone (what a user's design pays), then the wrapped design
     // that is placed.
-    let cells = fpga::synth_ice40_json(&dir, &[&file], top.module(), device.dsp, "top.json")?;
-    fpga::synth_ice40_json(
+    let (family, dsp) = (device.family, device.dsp);
+    let cells = fpga::synth_json(&dir, &[&file], top.module(), family, dsp, "top.json")?;
+    fpga::synth_json(
         &dir,
         &[&file, "boundary.v"],
         &boundary,
-        device.dsp,
+        family,
+        dsp,
         "wrapped.json",
     )?;
     let mut routed = Vec::new();
     for &seed in seeds {
-        let r = fpga::nextpnr_ice40(
+        let r = fpga::nextpnr(
             &dir,
             "wrapped.json",
-            device.name,
+            family,
+            device.nextpnr,
             device.package,
             p.clock_hz() / 1e6,
             seed,
@@ -277,21 +317,29 @@ fn markdown(p: &Params, rows: &[Row]) -> String {
             .unwrap_or_default()
     };
     let mhz = p.clock_hz() / 1e6;
+    let mut tools = vec![version("yosys", "-V")];
+    for family in [Family::Ice40, Family::Ecp5] {
+        if rows.iter().any(|r| r.device.family == family) {
+            tools.push(version(family.nextpnr(), "--version"));
+        }
+    }
     let mut m = String::new();
     let _ = writeln!(
         m,
         "Written by `encspeed synth` for {} lines, {}-bit counters, dt {} cycles, clock {mhz} MHz.\n\
-         Tools: {}; {}.\n\n\
-         Cells: yosys `synth_ice40` of the top alone (`-dsp` on the UP5K). Logic cells and Fmax:\n\
-         nextpnr-ice40 of the top inside the boundary wrapper (every port registered),\n\
-         clock constrained to {mhz} MHz, one run per placement seed.\n",
+         Tools: {}.\n\n\
+         Cells: yosys `synth_ice40` (`-dsp` on the UP5K) or `synth_ecp5` of the top alone. Logic\n\
+         cells and Fmax: nextpnr of the top inside the boundary wrapper (every port registered),\n\
+         clock constrained to {mhz} MHz, one run per placement seed. Cells are the family's own:\n\
+         LUT4 is SB_LUT4 or LUT4 (the ECP5's PFUMX and L6MUX21 not counted), carry SB_CARRY\n\
+         (1 bit) or CCU2C (2 bits), BRAM SB_RAM40_4K (4 kbit) or DP16KD (18 kbit), DSP SB_MAC16\n\
+         or MULT18X18D, logic cells ICESTORM_LC or TRELLIS_COMB.\n",
         p.lines(),
         p.counter_bits(),
         p.dt_cycles(),
-        version("yosys", "-V"),
-        version("nextpnr-ice40", "--version"),
+        tools.join("; "),
     );
-    m += "| top | device | SB_LUT4 | flip-flops | SB_CARRY | BRAM | DSP | logic cells | Fmax, MHz | meets clock | critical path (slowest seed) |\n";
+    m += "| top | device | LUT4 | flip-flops | carry | BRAM | DSP | logic cells | Fmax, MHz | meets clock | critical path (slowest seed) |\n";
     m += "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for r in rows {
         let c = &r.cells;
@@ -357,7 +405,13 @@ mod tests {
             vec![Top::Wb, Top::EccWb]
         );
         assert!(tops("fast").unwrap_err().contains("encspeed_core"));
-        assert_eq!(devices("up5k").unwrap(), vec![DEVICES[1]]);
-        assert!(devices("ecp5").is_err());
+        assert_eq!(devices("up5k", |_| true).unwrap(), vec![DEVICES[1]]);
+        assert_eq!(devices("ecp5-85f", |_| false).unwrap(), vec![DEVICES[3]]);
+        assert_eq!(devices("all", |_| true).unwrap(), DEVICES.to_vec());
+        assert_eq!(
+            devices("all", |f| f == Family::Ice40).unwrap(),
+            DEVICES[..2].to_vec()
+        );
+        assert!(devices("ecp5", |_| true).unwrap_err().contains("ecp5-25f"));
     }
 }

