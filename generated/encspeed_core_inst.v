@@ -7,7 +7,7 @@
 // cfg_* are sampled at every edge: tie them to constants or drive them from registers (0 on cfg_dt and cfg_timeout selects the generated defaults).
 encspeed_core u_encspeed_core (
     .clock            (clock           ), // input: core clock; everything happens at its rising edge
-    .reset            (reset           ), // input: synchronous, active high; hold it for at least one edge
+    .reset            (reset           ), // input: synchronous, active high, registered: the core resets at the edge after each edge that samples it high (and at the first edge after power-up)
     .enc_a            (enc_a           ), // input: encoder channel A, asynchronous (two-flop synchronised inside)
     .enc_b            (enc_b           ), // input: encoder channel B, asynchronous; forward = A leads B by 90 degrees
     .enc_z            (enc_z           ), // input: encoder index Z, asynchronous

@@ -9,7 +9,7 @@
 // A write that changes CTRL.MODE resets the core (not the registers) at the next edge.
 // Ports:
 //   input  clock: core and bus clock; everything happens at its rising edge
-//   input  reset: synchronous, active high: resets the core and every register; hold it for at least one edge
+//   input  reset: synchronous, active high: resets every register at the edge that samples it, and the core (which registers it) at the edge after; the core also resets at the first edge after power-up
 //   input  enc_a: encoder channel A, asynchronous (two-flop synchronised inside)
 //   input  enc_b: encoder channel B, asynchronous; forward = A leads B by 90 degrees
 //   input  enc_z: encoder index Z, asynchronous
@@ -577,6 +577,7 @@ module encspeed_ecc_wb$ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_
     reg  mode_reset$reset;
     reg  [1:0] mode_reset$cfg_mode;
     wire  mode_reset$rst;
+    wire  mode_reset$rst_next;
     wire  [1:0] mode_reset$mode;
     
     // Local signals
@@ -707,6 +708,7 @@ module encspeed_ecc_wb$ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_
         .reset(mode_reset$reset),
         .cfg_mode(mode_reset$cfg_mode),
         .rst(mode_reset$rst),
+        .rst_next(mode_reset$rst_next),
         .mode(mode_reset$mode)
     );
     
@@ -989,6 +991,8 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
     wire  decoder$step;
     wire  decoder$forward;
     wire  decoder$first;
+    wire  decoder$backward;
+    wire  decoder$first_next;
     wire  decoder$direction;
     wire  decoder$illegal;
     wire  decoder$illegal_seen;
@@ -1086,6 +1090,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
     reg  pc$reset;
     reg  pc$step;
     reg  pc$forward;
+    reg  pc$backward;
     reg  [23:0] pc$cfg_dt;
     wire  [23:0] pc$count;
     wire  pc$saturated;
@@ -1163,7 +1168,11 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
     reg  mode_reset$reset;
     reg  [1:0] mode_reset$cfg_mode;
     wire  mode_reset$rst;
+    wire  mode_reset$rst_next;
     wire  [1:0] mode_reset$mode;
+    reg  engine_reset_reg$d;
+    wire  engine_reset_reg$q;
+    reg  engine_reset_reg$clock;
     
     // Local signals
     reg  [31:0] restart_now;
@@ -1239,6 +1248,8 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         .step(decoder$step),
         .forward(decoder$forward),
         .first(decoder$first),
+        .backward(decoder$backward),
+        .first_next(decoder$first_next),
         .direction(decoder$direction),
         .illegal(decoder$illegal),
         .illegal_seen(decoder$illegal_seen),
@@ -1362,6 +1373,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         .reset(pc$reset),
         .step(pc$step),
         .forward(pc$forward),
+        .backward(pc$backward),
         .cfg_dt(pc$cfg_dt),
         .count(pc$count),
         .saturated(pc$saturated),
@@ -1463,7 +1475,13 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         .reset(mode_reset$reset),
         .cfg_mode(mode_reset$cfg_mode),
         .rst(mode_reset$rst),
+        .rst_next(mode_reset$rst_next),
         .mode(mode_reset$mode)
+    );
+    encspeed_ecc_wb$ecc$core$engine_reset_reg engine_reset_reg(
+        .d(engine_reset_reg$d),
+        .q(engine_reset_reg$q),
+        .clock(engine_reset_reg$clock)
     );
     
     // Update code
@@ -1501,6 +1519,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         window_last$clock = clock;
         restart_pos$clock = clock;
         position_before$clock = clock;
+        engine_reset_reg$clock = clock;
         last_dir$d = last_dir$q;
         et_have$d = et_have$q;
         dt_reg$d = dt_reg$q;
@@ -1514,6 +1533,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         window_last$d = window_last$q;
         restart_pos$d = restart_pos$q;
         position_before$d = position_before$q;
+        engine_reset_reg$d = engine_reset_reg$q;
         mode_reset$reset = reset;
         mode_reset$cfg_mode = cfg_mode;
         rst = mode_reset$rst;
@@ -1579,7 +1599,8 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         counter$limit_less_one = limit_less_one;
         counter$limit_less_two = limit_less_two;
         counter$cfg_z_mode = z_mode_reg$q;
-        engine_reset = rst | decoder$first;
+        engine_reset_reg$d = mode_reset$rst_next | decoder$first_next;
+        engine_reset = engine_reset_reg$q;
         step_counted = decoder$step & ~rst;
         if (decoder$step) begin
             last_dir$d = decoder$forward;
@@ -1647,6 +1668,7 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         et$step = decoder$step;
         mt$step = decoder$step;
         pc$forward = decoder$forward;
+        pc$backward = decoder$backward;
         et$forward = decoder$forward;
         mt$forward = decoder$forward;
         mt$first = decoder$first;
@@ -6616,7 +6638,7 @@ module encspeed_ecc_wb$ecc$core$counter$z_prev(d,q,clock);
 endmodule // encspeed_ecc_wb$ecc$core$counter$z_prev
 
 
-module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,first,direction,illegal,illegal_seen,illegal_count,mode_error);
+module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,first,backward,first_next,direction,illegal,illegal_seen,illegal_count,mode_error);
     
     // Module arguments
     input wire  clock;
@@ -6627,6 +6649,8 @@ module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,fi
     output reg  step;
     output reg  forward;
     output reg  first;
+    output reg  backward;
+    output reg  first_next;
     output reg  direction;
     output reg  illegal;
     output reg  illegal_seen;
@@ -6657,6 +6681,9 @@ module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,fi
     reg  forward_reg$d;
     wire  forward_reg$q;
     reg  forward_reg$clock;
+    reg  backward_reg$d;
+    wire  backward_reg$q;
+    reg  backward_reg$clock;
     reg  direction_reg$d;
     wire  direction_reg$q;
     reg  direction_reg$clock;
@@ -6683,6 +6710,7 @@ module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,fi
     reg  step_now;
     reg  illegal_now;
     reg  forward_now;
+    reg  first_now;
     
     // Sub module instances
     encspeed_ecc_wb$ecc$core$decoder$a_prev a_prev(
@@ -6709,6 +6737,11 @@ module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,fi
         .d(forward_reg$d),
         .q(forward_reg$q),
         .clock(forward_reg$clock)
+    );
+    encspeed_ecc_wb$ecc$core$decoder$backward_reg backward_reg(
+        .d(backward_reg$d),
+        .q(backward_reg$q),
+        .clock(backward_reg$clock)
     );
     encspeed_ecc_wb$ecc$core$decoder$direction_reg direction_reg(
         .d(direction_reg$d),
@@ -6748,6 +6781,7 @@ module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,fi
         primed$clock = clock;
         step_reg$clock = clock;
         forward_reg$clock = clock;
+        backward_reg$clock = clock;
         direction_reg$clock = clock;
         have_step$clock = clock;
         first_reg$clock = clock;
@@ -6759,6 +6793,7 @@ module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,fi
         primed$d = primed$q;
         step_reg$d = step_reg$q;
         forward_reg$d = forward_reg$q;
+        backward_reg$d = backward_reg$q;
         direction_reg$d = direction_reg$q;
         have_step$d = have_step$q;
         first_reg$d = first_reg$q;
@@ -6782,7 +6817,9 @@ module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,fi
         primed$d = 1'b1;
         step_reg$d = step_now;
         forward_reg$d = step_now & forward_now;
-        first_reg$d = step_now & (~have_step$q | (forward_now ^ direction_reg$q));
+        backward_reg$d = step_now & ~forward_now;
+        first_now = step_now & (~have_step$q | (forward_now ^ direction_reg$q)) & ~reset;
+        first_reg$d = first_now;
         if (step_now) begin
             direction_reg$d = forward_now;
             have_step$d = 1'b1;
@@ -6800,16 +6837,18 @@ module encspeed_ecc_wb$ecc$core$decoder(clock,reset,a,b,cfg_mode,step,forward,fi
             primed$d = 1'b0;
             step_reg$d = 1'b0;
             forward_reg$d = 1'b0;
+            backward_reg$d = 1'b0;
             direction_reg$d = 1'b0;
             have_step$d = 1'b0;
-            first_reg$d = 1'b0;
             illegal_reg$d = 1'b0;
             seen_reg$d = 1'b0;
             count_reg$d = count_zero;
         end
         step = step_reg$q;
         forward = forward_reg$q;
+        backward = backward_reg$q;
         first = first_reg$q;
+        first_next = first_now;
         direction = direction_reg$q;
         illegal = illegal_reg$q;
         illegal_seen = seen_reg$q;
@@ -6856,6 +6895,25 @@ module encspeed_ecc_wb$ecc$core$decoder$b_prev(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$decoder$b_prev
+
+
+module encspeed_ecc_wb$ecc$core$decoder$backward_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$decoder$backward_reg
 
 
 module encspeed_ecc_wb$ecc$core$decoder$count_reg(d,q,clock);
@@ -7078,6 +7136,57 @@ module encspeed_ecc_wb$ecc$core$dt_reg$dff(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$dt_reg$dff
+
+
+module encspeed_ecc_wb$ecc$core$engine_reset_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 1'b1;
+    
+    // Stub signals
+    reg  dff$d;
+    wire  dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$ecc$core$engine_reset_reg$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // encspeed_ecc_wb$ecc$core$engine_reset_reg
+
+
+module encspeed_ecc_wb$ecc$core$engine_reset_reg$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$engine_reset_reg$dff
 
 
 module encspeed_ecc_wb$ecc$core$et(clock,reset,step,forward,period,negative,strobe,stalled);
@@ -8381,22 +8490,26 @@ module encspeed_ecc_wb$ecc$core$last_dir(d,q,clock);
 endmodule // encspeed_ecc_wb$ecc$core$last_dir
 
 
-module encspeed_ecc_wb$ecc$core$mode_reset(clock,reset,cfg_mode,rst,mode);
+module encspeed_ecc_wb$ecc$core$mode_reset(clock,reset,cfg_mode,rst,rst_next,mode);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  [1:0] cfg_mode;
     output reg  rst;
+    output reg  rst_next;
     output reg  [1:0] mode;
     
     // Stub signals
     reg  [1:0] mode_reg$d;
     wire  [1:0] mode_reg$q;
     reg  mode_reg$clock;
-    reg  changed$d;
-    wire  changed$q;
-    reg  changed$clock;
+    reg  rst_reg$d;
+    wire  rst_reg$q;
+    reg  rst_reg$clock;
+    
+    // Local signals
+    reg  rst_now;
     
     // Sub module instances
     encspeed_ecc_wb$ecc$core$mode_reset$mode_reg mode_reg(
@@ -8404,44 +8517,27 @@ module encspeed_ecc_wb$ecc$core$mode_reset(clock,reset,cfg_mode,rst,mode);
         .q(mode_reg$q),
         .clock(mode_reg$clock)
     );
-    encspeed_ecc_wb$ecc$core$mode_reset$changed changed(
-        .d(changed$d),
-        .q(changed$q),
-        .clock(changed$clock)
+    encspeed_ecc_wb$ecc$core$mode_reset$rst_reg rst_reg(
+        .d(rst_reg$d),
+        .q(rst_reg$q),
+        .clock(rst_reg$clock)
     );
     
     // Update code
     always @(*) begin
         mode_reg$clock = clock;
-        changed$clock = clock;
+        rst_reg$clock = clock;
         mode_reg$d = mode_reg$q;
-        changed$d = changed$q;
+        rst_reg$d = rst_reg$q;
         mode_reg$d = cfg_mode;
-        changed$d = ~reset & (cfg_mode != mode_reg$q);
-        rst = reset | changed$q;
+        rst_now = reset | (cfg_mode != mode_reg$q);
+        rst_reg$d = rst_now;
+        rst_next = rst_now;
+        rst = rst_reg$q;
         mode = mode_reg$q;
     end
     
 endmodule // encspeed_ecc_wb$ecc$core$mode_reset
-
-
-module encspeed_ecc_wb$ecc$core$mode_reset$changed(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_ecc_wb$ecc$core$mode_reset$changed
 
 
 module encspeed_ecc_wb$ecc$core$mode_reset$mode_reg(d,q,clock);
@@ -8461,6 +8557,57 @@ module encspeed_ecc_wb$ecc$core$mode_reset$mode_reg(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$mode_reset$mode_reg
+
+
+module encspeed_ecc_wb$ecc$core$mode_reset$rst_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 1'b1;
+    
+    // Stub signals
+    reg  dff$d;
+    wire  dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$ecc$core$mode_reset$rst_reg$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // encspeed_ecc_wb$ecc$core$mode_reset$rst_reg
+
+
+module encspeed_ecc_wb$ecc$core$mode_reset$rst_reg$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$mode_reset$rst_reg$dff
 
 
 module encspeed_ecc_wb$ecc$core$mt(clock,reset,step,forward,first,cfg_dt,m,t,negative,strobe,stalled);
@@ -9041,13 +9188,14 @@ module encspeed_ecc_wb$ecc$core$mt$timer$plus_two_reg(d,q,clock);
 endmodule // encspeed_ecc_wb$ecc$core$mt$timer$plus_two_reg
 
 
-module encspeed_ecc_wb$ecc$core$pc(clock,reset,step,forward,cfg_dt,count,saturated,strobe);
+module encspeed_ecc_wb$ecc$core$pc(clock,reset,step,forward,backward,cfg_dt,count,saturated,strobe);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  step;
     input wire  forward;
+    input wire  backward;
     input wire  [23:0] cfg_dt;
     output reg  [23:0] count;
     output reg  saturated;
@@ -9138,7 +9286,7 @@ module encspeed_ecc_wb$ecc$core$pc(clock,reset,step,forward,cfg_dt,count,saturat
         timer$cfg_dt = cfg_dt;
         tick = timer$tick;
         up = step & forward;
-        down = step & ~forward;
+        down = backward;
         delta = one;
         if (down) begin
             delta = all_ones;
@@ -18804,22 +18952,26 @@ module encspeed_ecc_wb$ecc$line_tap$since(d,q,clock);
 endmodule // encspeed_ecc_wb$ecc$line_tap$since
 
 
-module encspeed_ecc_wb$ecc$mode_reset(clock,reset,cfg_mode,rst,mode);
+module encspeed_ecc_wb$ecc$mode_reset(clock,reset,cfg_mode,rst,rst_next,mode);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  [1:0] cfg_mode;
     output reg  rst;
+    output reg  rst_next;
     output reg  [1:0] mode;
     
     // Stub signals
     reg  [1:0] mode_reg$d;
     wire  [1:0] mode_reg$q;
     reg  mode_reg$clock;
-    reg  changed$d;
-    wire  changed$q;
-    reg  changed$clock;
+    reg  rst_reg$d;
+    wire  rst_reg$q;
+    reg  rst_reg$clock;
+    
+    // Local signals
+    reg  rst_now;
     
     // Sub module instances
     encspeed_ecc_wb$ecc$mode_reset$mode_reg mode_reg(
@@ -18827,44 +18979,27 @@ module encspeed_ecc_wb$ecc$mode_reset(clock,reset,cfg_mode,rst,mode);
         .q(mode_reg$q),
         .clock(mode_reg$clock)
     );
-    encspeed_ecc_wb$ecc$mode_reset$changed changed(
-        .d(changed$d),
-        .q(changed$q),
-        .clock(changed$clock)
+    encspeed_ecc_wb$ecc$mode_reset$rst_reg rst_reg(
+        .d(rst_reg$d),
+        .q(rst_reg$q),
+        .clock(rst_reg$clock)
     );
     
     // Update code
     always @(*) begin
         mode_reg$clock = clock;
-        changed$clock = clock;
+        rst_reg$clock = clock;
         mode_reg$d = mode_reg$q;
-        changed$d = changed$q;
+        rst_reg$d = rst_reg$q;
         mode_reg$d = cfg_mode;
-        changed$d = ~reset & (cfg_mode != mode_reg$q);
-        rst = reset | changed$q;
+        rst_now = reset | (cfg_mode != mode_reg$q);
+        rst_reg$d = rst_now;
+        rst_next = rst_now;
+        rst = rst_reg$q;
         mode = mode_reg$q;
     end
     
 endmodule // encspeed_ecc_wb$ecc$mode_reset
-
-
-module encspeed_ecc_wb$ecc$mode_reset$changed(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_ecc_wb$ecc$mode_reset$changed
 
 
 module encspeed_ecc_wb$ecc$mode_reset$mode_reg(d,q,clock);
@@ -18884,6 +19019,57 @@ module encspeed_ecc_wb$ecc$mode_reset$mode_reg(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$mode_reset$mode_reg
+
+
+module encspeed_ecc_wb$ecc$mode_reset$rst_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 1'b1;
+    
+    // Stub signals
+    reg  dff$d;
+    wire  dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$ecc$mode_reset$rst_reg$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // encspeed_ecc_wb$ecc$mode_reset$rst_reg
+
+
+module encspeed_ecc_wb$ecc$mode_reset$rst_reg$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$mode_reset$rst_reg$dff
 
 
 module encspeed_ecc_wb$ecc$n3_corrector(clock,reset,start,n3,position,nep,ndt,shift,counts_per_rev,coef_c,coef_d,n3c,valid);

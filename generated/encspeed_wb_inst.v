@@ -7,7 +7,7 @@
 // The configuration is in registers: see encspeed_regs.h and docs/registers.md.
 encspeed_wb u_encspeed_wb (
     .clock    (clock   ), // input: core and bus clock; everything happens at its rising edge
-    .reset    (reset   ), // input: synchronous, active high: resets the core and every register; hold it for at least one edge
+    .reset    (reset   ), // input: synchronous, active high: resets every register at the edge that samples it, and the core (which registers it) at the edge after; the core also resets at the first edge after power-up
     .enc_a    (enc_a   ), // input: encoder channel A, asynchronous (two-flop synchronised inside)
     .enc_b    (enc_b   ), // input: encoder channel B, asynchronous; forward = A leads B by 90 degrees
     .enc_z    (enc_z   ), // input: encoder index Z, asynchronous

@@ -384,7 +384,41 @@ fn baseline_strobe_follows_the_window_end_by_the_block_latency() {
 fn configuration_inputs_act_after_the_documented_edges() {
     // The latencies by hand: the core registers its configuration inputs once.
     let lat = Latency::new(&params(), 0);
-    assert_eq!((lat.config_to_effect, lat.cfg_dt_to_window), (1, 2));
+    assert_eq!(
+        (
+            lat.reset_to_effect,
+            lat.config_to_effect,
+            lat.cfg_dt_to_window
+        ),
+        (1, 1, 2)
+    );
+
+    // reset: move the shaft, stop, then raise reset first sampled at edge K (held 2 edges):
+    // the core counts at edge K as if nothing happened, and its registers reset at edges
+    // K + 1 and K + 2; the start-up hold then runs again (no step while the shaft stands).
+    const R: usize = 600;
+    let mut m = CoreModel::new(&params());
+    let outs: Vec<CoreOutputs> = (0..R as u64 + 6)
+        .map(|k| {
+            let (a, b) = quad(k.min(400), 16, true);
+            m.step(CoreInputs {
+                reset: k < 3 || (R as u64..R as u64 + 2).contains(&k),
+                enc_a: a,
+                enc_b: b,
+                cfg_dt: DT,
+                cfg_mode: 2,
+                ..Default::default()
+            })
+        })
+        .collect();
+    assert!(
+        outs[R].position > 50,
+        "edge R only samples it: {}",
+        outs[R].position
+    );
+    assert_eq!(outs[R + 1].position, 0, "the reset acts at edge R + 1");
+    assert!(!outs[R + 1].valid && !outs[R + 2].valid);
+    assert!(outs[R + 3..].iter().all(|o| o.position == 0));
 
     // cfg_mode: move the shaft, stop, then change the mode first sampled at edge K. The reset
     // it causes acts at edge K + 1: the position is still counted after edge K, 0 after K + 1.

@@ -73,8 +73,9 @@ fn corrected_mt_on_the_rigid_disc() {
                 ecc_c: c,
                 ecc_d: d,
                 // Armed at the end of reset, before any index: the top holds the arm
-                // until the index that aligns the position.
-                ident_arm: k == 3,
+                // until the index that aligns the position. The reset sampled at edges
+                // 0..=2 acts at edges 1..=3, so edge 4 is the first one it does not clear.
+                ident_arm: k == 4,
             });
             let k64 = k as u64;
             if o.mtc_strobe {
@@ -222,7 +223,7 @@ fn identification_frame_of_x4_is_a_quarter_line_after_x1_and_x2() {
                     cfg_z_mode: 1,
                     ..Default::default()
                 },
-                ident_arm: k == 3,
+                ident_arm: k == 4,
                 ..Default::default()
             });
             ident = o.ident;

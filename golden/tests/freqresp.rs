@@ -548,14 +548,15 @@ fn hardware_latency_and_read_instant_by_hand() {
     // later (docs/ports.md); the time base ticks at edge T; PC's window ends with the step
     // of edge T − 1, ET's and M/T's with that of edge T; the block starts at T + 1 and
     // publishes at T + 1 + L. So D = 64 + 1 + 4 + 1 = 70 cycles for PC, 69 for ET and
-    // M/T, and the strobe is at cycle k·dt + 3 + 64 (the time base leaves 3 cycles of
-    // reset with its phase at 0, so T = k·dt + 2).
+    // M/T, and the strobe is at cycle k·dt + 4 + 64 (reset, sampled at edges 0..=2, acts
+    // at edges 1..=3, one edge later (docs/ports.md); the time base leaves its last reset
+    // edge with its phase at 0, so T = k·dt + 3).
     use Estimator::{Et, Mt, Pc};
     for (est, d) in [(Pc, 70u64), (Et, 69), (Mt, 69)] {
         let e = exp(hw(est, 3600.0, 1e-3));
         assert_eq!(e.core_params().unwrap().counter_bits(), 13, "{est}");
         assert_eq!(e.hardware_latency_cycles(), Some(d), "{est}");
-        assert_eq!(e.read_offset_cycles(), 67, "{est}");
+        assert_eq!(e.read_offset_cycles(), 68, "{est}");
         let op = *e.operating_point();
         let paper = match est {
             Pc => FreqModel::Product(pc_model(&op)),

@@ -317,13 +317,18 @@ fn check_trace(p: &Params, inputs: &[CoreInputs], seen: &mut Seen) -> Vec<CoreOu
         }
         outs.push(o);
     }
-    // Recovery: a reset leaves no trace of the past. From every reset burst on, the outputs
-    // are those of a model that has just been powered up with the same inputs.
+    // Recovery: a reset leaves no trace of the past. From the edge at which every reset
+    // burst acts on (the edge after the first one that samples it: reset_to_effect), the
+    // outputs are those of a model powered up at that first edge with the same inputs
+    // (whose power-up reset acts there, and which has sampled the same configuration).
     for r in 1..inputs.len() {
         if inputs[r].reset && !inputs[r - 1].reset {
             let mut fresh = CoreModel::new(p);
             for (j, inp) in inputs.iter().enumerate().skip(r) {
                 let f = fresh.step(*inp);
+                if j == r {
+                    continue;
+                }
                 assert_eq!(
                     f, outs[j],
                     "cycle {j}: after the reset at cycle {r} the core differs from a fresh one"
@@ -577,10 +582,12 @@ impl Motion {
 /// edges later (synchroniser 2, filter max(L, 1), decoder 1) and restarts the estimator
 /// there; the next dt tick comes dt later and the first step after it (≤ one line) primes it
 /// with a restart; then 1 edge to the calculator's start, its latency 3(N + 17) + 5, and 1
-/// edge for the speed registers: 2 + 3 + 2·max(L, 1) + 2·line + dt + L_calc + 2.
+/// edge for the speed registers: 2 + 3 + 2·max(L, 1) + 2·line + dt + L_calc + 2; and the
+/// core's reset acts one edge after the last edge that samples `reset` (reset_to_effect).
 fn valid_bound(p: &Params, filter: u64, hold: usize, dt: u64) -> u64 {
     let line = 4 * hold as u64;
-    SYNC_CYCLES
+    golden::top::ports::Latency::new(p, filter).reset_to_effect as u64
+        + SYNC_CYCLES
         + 3
         + 2 * filter.max(1)
         + 2 * line

@@ -167,7 +167,10 @@ impl Experiment {
             }
             let d = window_to_strobe_cycles(spec.estimator, p);
             model = model.delayed(d as f64 / spec.clock_hz);
-            read_offset = RESET_CYCLES + l;
+            // The core's time base starts at the last reset edge, which is the edge after
+            // the last one that samples `reset` (reset_to_effect).
+            read_offset =
+                RESET_CYCLES + u64::from(crate::top::ports::Latency::new(p, 0).reset_to_effect) + l;
         }
         Ok(Experiment {
             spec,
@@ -189,8 +192,9 @@ impl Experiment {
     }
 
     /// On the core: sample k is the core's output after cycle k·dt + this many cycles
-    /// (0 for n3, read at the sample instants; [`RESET_CYCLES`] + the baseline block's
-    /// latency for the hardware baselines, the cycle of their `baseline_strobe`).
+    /// (0 for n3, read at the sample instants; [`RESET_CYCLES`] + the reset's own edge + the
+    /// baseline block's latency for the hardware baselines, the cycle of their
+    /// `baseline_strobe`).
     pub fn read_offset_cycles(&self) -> u64 {
         self.read_offset
     }

@@ -55,6 +55,11 @@
 //!   with the new mode in place (as `reset` does: position, estimators, counters and
 //!   faults; a count in one mode means nothing in another), then the start-up hold runs
 //!   again. `cfg_error` is registered from the inputs (one edge).
+//! - **Reset.** `reset` is registered too ([`ModeReset`]): the core's registers reset at
+//!   the edge after each edge that samples `reset` high
+//!   ([`crate::top::ports::Latency::reset_to_effect`]), so that a flip-flop drives the
+//!   core's widest fan-out. That register powers up high, so the first edge resets the
+//!   core whatever `reset` is: [`CoreModel::new`]'s state is the state after it.
 //! - **Faults.** `fault_illegal` (both channels changed between two samples),
 //!   `fault_overspeed` (the A or B filter rejected a level shorter than `cfg_filter`
 //!   cycles: a glitch, or edges closer than the filter passes) and `fault_revolution` (a
@@ -348,7 +353,7 @@ impl CoreModel {
     pub fn step(&mut self, inp: CoreInputs) -> CoreOutputs {
         assert!(inp.cfg_mode <= MODE_INVALID, "cfg_mode = {}", inp.cfg_mode);
         // The configuration registers before the edge (module docs: Configuration).
-        let rst = self.mode_reset.rst(inp.reset);
+        let rst = self.mode_reset.rst();
         let mode = self.mode_reset.mode();
         let shift = mode_shift(mode);
         let (cfg_filter, cfg_z_mode) = (self.filter_reg, self.z_mode_reg);

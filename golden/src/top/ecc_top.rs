@@ -167,7 +167,7 @@ impl EccTopModel {
         let c = &inp.core;
         let before = self.core.outputs();
         // The core's reset and mode, from the same registered rule.
-        let rst = self.mode_reset.rst(c.reset);
+        let rst = self.mode_reset.rst();
         let shift = mode_shift(self.mode_reset.mode());
         self.mode_reset.step(c.reset, c.cfg_mode);
         let job = before.mt_strobe.then_some(MtJob {

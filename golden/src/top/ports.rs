@@ -101,7 +101,7 @@ pub fn core_ports(counter_bits: u32) -> Vec<Port> {
         i(
             "reset",
             1,
-            "synchronous, active high; hold it for at least one edge",
+            "synchronous, active high, registered: the core resets at the edge after each edge that samples it high (and at the first edge after power-up)",
         ),
     ];
     v.extend(encoder_inputs());
@@ -193,6 +193,10 @@ pub struct Latency {
     /// the edge after which `baseline_strobe` shows the window's speeds: the baseline
     /// block samples the start one edge later and takes 2·(N + F + 1) + 4 edges.
     pub window_to_baseline_strobe: u32,
+    /// From the edge that samples `reset` to the edge at which the core's registers reset:
+    /// the core registers its reset once (a flip-flop at the head of its widest fan-out), 1.
+    /// A reset held for k edges resets the core at the k edges after those.
+    pub reset_to_effect: u32,
     /// From the edge that samples a new `cfg_filter`, `cfg_z_mode` or `cfg_mode` to the
     /// edge at which it acts (a new `cfg_mode`: the reset of the core): the core registers
     /// its configuration inputs once, 1. (`stalled` compares with the registered
@@ -215,6 +219,7 @@ impl Latency {
             speed_calc,
             edge_to_speed_strobe: edge_to_position + 1 + speed_calc + 1,
             window_to_baseline_strobe: 1 + baseline,
+            reset_to_effect: 1,
             config_to_effect: 1,
             cfg_dt_to_window: 2,
         }

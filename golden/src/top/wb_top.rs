@@ -20,7 +20,8 @@
 //! the core one edge after the write edge (the ack cycle's edge), and a read returns the
 //! core's outputs as they stood in the cycle of the request.
 //!
-//! The reset is shared: `reset` resets the core and the register file at the same edge.
+//! The reset is shared: `reset` resets the register file at the edge that samples it and
+//! the core at the edge after (the core registers its reset: docs/ports.md).
 //! After reset `CTRL` is 0 (x1, Z ignored), `CFG_DT` and `CFG_TIMEOUT` are 0 (the
 //! generation defaults), `CFG_FILTER` is 0 (off). A write that changes `CTRL.MODE` resets
 //! the whole core at the edge after the one that sees the new mode (the core's own rule,
@@ -193,7 +194,7 @@ pub fn wb_top_ports() -> Vec<Port> {
     let d = DATA_BITS as u32;
     let mut v = vec![
         i("clock", 1, "core and bus clock; everything happens at its rising edge"),
-        i("reset", 1, "synchronous, active high: resets the core and every register; hold it for at least one edge"),
+        i("reset", 1, "synchronous, active high: resets every register at the edge that samples it, and the core (which registers it) at the edge after; the core also resets at the first edge after power-up"),
     ];
     v.extend(encoder_inputs());
     v.extend([

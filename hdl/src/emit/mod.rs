@@ -70,9 +70,9 @@ fn header(module: &str, p: &Params, function: &str, extra: &[String], ports: &[P
         p.speed_frac_bits()
     ));
     line(format!(
-        "Latency (cfg_filter = 0): A/B edge to position {} cycles; speed calculator {}; A/B edge that restarts Table 1 to speed_strobe {}; mt_strobe (window end) to baseline_strobe {}; a configuration input acts {} edge(s) after the edge that samples it (cfg_mode: the core's reset), cfg_dt moves the dt windows {} edges after.",
+        "Latency (cfg_filter = 0): A/B edge to position {} cycles; speed calculator {}; A/B edge that restarts Table 1 to speed_strobe {}; mt_strobe (window end) to baseline_strobe {}; reset acts {} edge(s) after the edge that samples it; a configuration input acts {} edge(s) after the edge that samples it (cfg_mode: the core's reset), cfg_dt moves the dt windows {} edges after.",
         latency.edge_to_position, latency.speed_calc, latency.edge_to_speed_strobe, latency.window_to_baseline_strobe,
-        latency.config_to_effect, latency.cfg_dt_to_window
+        latency.reset_to_effect, latency.config_to_effect, latency.cfg_dt_to_window
     ));
     for t in extra {
         line(t.clone());
@@ -194,9 +194,13 @@ pub fn ports_markdown(p: &Params) -> String {
          with the new mode in place. The effective dt of a new `cfg_dt` shows in \
          `dt_active` one edge after the edge that samples it, and the dt windows (Rairán's \
          time base, PC, M/T) use it from {} edges after that edge. `cfg_error` shows one edge after. \
-         `reset` is not delayed. The same figures are `config_to_effect` and \
+         `reset` is registered once as well, so that a flip-flop, not an input, drives the \
+         core's widest fan-out: the core's registers reset {} edge after each edge that \
+         samples `reset` high (a reset held for k edges resets the core at the k edges after \
+         those), and that register powers up high, so the first edge after configuration \
+         resets the core too. The same figures are `reset_to_effect`, `config_to_effect` and \
          `cfg_dt_to_window` in the manifest.\n",
-        l.config_to_effect, l.config_to_effect, l.cfg_dt_to_window
+        l.config_to_effect, l.config_to_effect, l.cfg_dt_to_window, l.reset_to_effect
     ));
     md.push_str(&format!(
         "\n## `encspeed_ecc`: the core with the eccentricity-corrected speeds\n\n\

@@ -12,7 +12,7 @@
 //!   line, so a shaft dithering on it does not drift).
 //!
 //! Ports: `a`, `b` (filtered channels), `cfg_mode[1:0]` (0 = x1, 1 = x2, 2 = x4, 3 = x4 and
-//! `mode_error`). Registered outputs: `step` and `forward` (one cycle per step; `forward` is
+//! `mode_error`). Registered outputs: `step`, `forward` and `backward` (one cycle per step; `forward` and `backward` are
 //! low without a step), `first` (with `step`: the first step since reset, or a step against
 //! the last one, a reversal; low without a step), `direction` (of the last step, 1 =
 //! forward), `illegal` (one cycle),
@@ -46,6 +46,12 @@ pub struct QuadratureDecoder<const G: usize> {
     pub forward: Signal<Out, Bit>,
     /// With `step`: the first step since reset, or one against the last step.
     pub first: Signal<Out, Bit>,
+    /// A backward step (`step` ∧ ¬`forward`), a register of its own: the up/down counters
+    /// add −1 on it straight from a flip-flop.
+    pub backward: Signal<Out, Bit>,
+    /// What `first` will be after the next edge (the core registers its estimator reset
+    /// from it).
+    pub first_next: Signal<Out, Bit>,
     /// Direction of the last step (1 = forward).
     pub direction: Signal<Out, Bit>,
     /// One cycle per illegal transition.
@@ -61,6 +67,7 @@ pub struct QuadratureDecoder<const G: usize> {
     primed: DFF<Bit>,
     step_reg: DFF<Bit>,
     forward_reg: DFF<Bit>,
+    backward_reg: DFF<Bit>,
     direction_reg: DFF<Bit>,
     /// A step since reset: `direction_reg` holds a real direction.
     have_step: DFF<Bit>,
@@ -74,6 +81,7 @@ pub struct QuadratureDecoder<const G: usize> {
     step_now: Signal<Local, Bit>,
     illegal_now: Signal<Local, Bit>,
     forward_now: Signal<Local, Bit>,
+    first_now: Signal<Local, Bit>,
     mode_x1: Constant<Bits<2>>,
     mode_x2: Constant<Bits<2>>,
     mode_invalid: Constant<Bits<2>>,
@@ -94,6 +102,10 @@ impl<const G: usize> Default for QuadratureDecoder<G> {
             step: Default::default(),
             forward: Default::default(),
             first: Default::default(),
+            backward: Default::default(),
+            backward_reg: Default::default(),
+            first_next: Default::default(),
+            first_now: Default::default(),
             direction: Default::default(),
             illegal: Default::default(),
             illegal_seen: Default::default(),
@@ -137,6 +149,7 @@ impl<const G: usize> Logic for QuadratureDecoder<G> {
             primed,
             step_reg,
             forward_reg,
+            backward_reg,
             direction_reg,
             have_step,
             first_reg,
@@ -163,10 +176,13 @@ impl<const G: usize> Logic for QuadratureDecoder<G> {
         self.primed.d.next = true;
         self.step_reg.d.next = self.step_now.val();
         self.forward_reg.d.next = self.step_now.val() & self.forward_now.val();
+        self.backward_reg.d.next = self.step_now.val() & !self.forward_now.val();
         // `first` is found here, a register, rather than by the core from `step` and
         // `forward`: it restarts the estimator, the widest fan-out after the reset.
-        self.first_reg.d.next = self.step_now.val()
-            & (!self.have_step.q.val() | (self.forward_now.val() ^ self.direction_reg.q.val()));
+        self.first_now.next = self.step_now.val()
+            & (!self.have_step.q.val() | (self.forward_now.val() ^ self.direction_reg.q.val()))
+            & !self.reset.val();
+        self.first_reg.d.next = self.first_now.val();
         if self.step_now.val() {
             self.direction_reg.d.next = self.forward_now.val();
             self.have_step.d.next = true;
@@ -184,16 +200,18 @@ impl<const G: usize> Logic for QuadratureDecoder<G> {
             self.primed.d.next = false;
             self.step_reg.d.next = false;
             self.forward_reg.d.next = false;
+            self.backward_reg.d.next = false;
             self.direction_reg.d.next = false;
             self.have_step.d.next = false;
-            self.first_reg.d.next = false;
             self.illegal_reg.d.next = false;
             self.seen_reg.d.next = false;
             self.count_reg.d.next = self.count_zero.val();
         }
         self.step.next = self.step_reg.q.val();
         self.forward.next = self.forward_reg.q.val();
+        self.backward.next = self.backward_reg.q.val();
         self.first.next = self.first_reg.q.val();
+        self.first_next.next = self.first_now.val();
         self.direction.next = self.direction_reg.q.val();
         self.illegal.next = self.illegal_reg.q.val();
         self.illegal_seen.next = self.seen_reg.q.val();

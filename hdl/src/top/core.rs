@@ -9,7 +9,7 @@
 //! enc_z ─ TwoFlopSync ─ GlitchFilter ────────────────────────┘ (z)
 //!                          step, forward ─┬─ Timebase + SyncEstimator ─ nep, ndt ─ SpeedCalc ─ SpeedHold ─ speed_n1..n3
 //!                                         └─ PcCounter, EtTimer, MtCounter ─ BaselineSpeeds ─ speed_pc, speed_et, speed_mt
-//! ModeReset (registered cfg_mode and the reset its change causes), Startup (holds decoder
+//! ModeReset (registered cfg_mode and the registered reset: `reset` or a mode change), Startup (holds decoder
 //! and position counter through the filter delay), FaultFlags.
 //! ```
 //!
@@ -169,6 +169,9 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     z_mode_reg: DFF<Bits<2>>,
     cfg_error_reg: DFF<Bit>,
     mode_reset: ModeReset,
+    /// `rst` or the decoder's `first`, as a register of its own (from their next values);
+    /// high at power-up, as `rst` is.
+    engine_reset_reg: DFFWithInit<Bit>,
     rst: Signal<Local, Bit>,
     front_reset: Signal<Local, Bit>,
     step_counted: Signal<Local, Bit>,
@@ -295,6 +298,7 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             z_mode_reg: Default::default(),
             cfg_error_reg: Default::default(),
             mode_reset: Default::default(),
+            engine_reset_reg: DFFWithInit::new(true),
             rst: Default::default(),
             front_reset: Default::default(),
             step_counted: Default::default(),
@@ -351,7 +355,8 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             tag_ndt,
             window_last,
             restart_pos,
-            position_before
+            position_before,
+            engine_reset_reg
         );
 
         // Configuration, registered once here: the blocks read registers (the glitch filters
@@ -434,8 +439,11 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         // The first step of a direction (after reset or a reversal) restarts the estimator
         // at that step, counted as its first pulse. The decoder finds it as a register (its
         // resets include every core reset, and no step passes its start-up hold), so the
-        // estimator's reset is `rst` or one flip-flop.
-        self.engine_reset.next = self.rst.val() | self.decoder.first.val();
+        // estimator's reset is `rst` or that register, itself one register here, loaded with
+        // the next values of the two (so that it drives its fan-out from a flip-flop).
+        self.engine_reset_reg.d.next =
+            self.mode_reset.rst_next.val() | self.decoder.first_next.val();
+        self.engine_reset.next = self.engine_reset_reg.q.val();
         self.step_counted.next = self.decoder.step.val() & !self.rst.val();
         if self.decoder.step.val() {
             self.last_dir.d.next = self.decoder.forward.val();
@@ -513,6 +521,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.et.step.next = self.decoder.step.val();
         self.mt.step.next = self.decoder.step.val();
         self.pc.forward.next = self.decoder.forward.val();
+        self.pc.backward.next = self.decoder.backward.val();
         self.et.forward.next = self.decoder.forward.val();
         self.mt.forward.next = self.decoder.forward.val();
         self.mt.first.next = self.decoder.first.val();

@@ -20,6 +20,7 @@ fn pc_step<const N: usize>(uut: &mut PcCounter<N>, c: &Cycle) -> PcOutputs {
     uut.reset.next = c.reset;
     uut.step.next = c.step;
     uut.forward.next = c.forward;
+    uut.backward.next = c.step && !c.forward;
     uut.cfg_dt.next = c.cfg_dt.into();
     common::edge(uut, |u, v| u.clock.next = Clock { clk: v });
     let raw = uut.count.val().to_u64();
@@ -66,10 +67,11 @@ fn pc_icarus<const N: usize>(seed: u64) {
         saturated_up += usize::from(o.strobe && o.saturated && o.count > 0);
         saturated_down += usize::from(o.strobe && o.saturated && o.count < 0);
         vectors += &format!(
-            "{:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
+            "{:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
             u8::from(c.reset),
             u8::from(c.step),
             u8::from(c.forward),
+            u8::from(c.step && !c.forward),
             c.cfg_dt,
             (o.count as u64) & mask,
             u8::from(o.saturated),
@@ -89,7 +91,13 @@ fn pc_icarus<const N: usize>(seed: u64) {
     }
     let tb = common::replay_bench(
         "pc_counter",
-        &[("reset", 1), ("step", 1), ("forward", 1), ("cfg_dt", N)],
+        &[
+            ("reset", 1),
+            ("step", 1),
+            ("forward", 1),
+            ("backward", 1),
+            ("cfg_dt", N),
+        ],
         &[("count", N), ("saturated", 1), ("strobe", 1)],
         "strobe",
     );

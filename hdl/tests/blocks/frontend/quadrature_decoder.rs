@@ -21,11 +21,14 @@ fn decode(mode: u64, ab: &[(u8, u8)]) -> Vec<i8> {
         uut.clock.next = Clock { clk: true };
         assert!(simulate(&mut uut, 100));
         if k > 0 {
-            out.push(match (uut.step.val(), uut.forward.val()) {
-                (false, _) => 0,
-                (true, true) => 1,
-                (true, false) => -1,
-            });
+            out.push(
+                match (uut.step.val(), uut.forward.val(), uut.backward.val()) {
+                    (false, false, false) => 0,
+                    (true, true, false) => 1,
+                    (true, false, true) => -1,
+                    other => panic!("step, forward, backward = {other:?} after edge {k}"),
+                },
+            );
         }
     }
     out
