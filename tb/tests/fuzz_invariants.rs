@@ -110,11 +110,14 @@ fn check_trace(p: &Params, inputs: &[CoreInputs], seen: &mut Seen) -> Vec<CoreOu
     let mut last_step: Option<bool> = None;
     // Between a reversal and the next speed_strobe.
     let mut zeroed = false;
+    // The core's registers reset at edge k when `reset` was sampled at edge k − 1 (the core
+    // registers its reset: reset_to_effect = 1), and at edge 0 (the register powers up high).
+    let resets_at = |k: usize| k == 0 || inputs[k - 1].reset;
     for (k, inp) in inputs.iter().enumerate() {
         // The hold ends once for all after a reset (raising cfg_filter later does not bring
         // it back): `rehold` below can never be set, and is kept as an assertion of that.
-        let hold = inp.reset || (!released && m.fill() < SYNC_CYCLES + inp.cfg_filter.max(1));
-        if inp.reset {
+        let hold = resets_at(k) || (!released && m.fill() < SYNC_CYCLES + inp.cfg_filter.max(1));
+        if resets_at(k) {
             released = false;
             rehold = false;
             tracked = true;
@@ -134,7 +137,8 @@ fn check_trace(p: &Params, inputs: &[CoreInputs], seen: &mut Seen) -> Vec<CoreOu
         }
         dt_max = dt_max.max(dt_eff(p, inp.cfg_dt));
         let o = m.step(*inp);
-        let s = mode_shift(inp.cfg_mode);
+        // The decoding mode in use at edge k: the mode register, cfg_mode sampled at k − 1.
+        let s = mode_shift(if k == 0 { 0 } else { inputs[k - 1].cfg_mode });
         let ctx = || format!("cycle {k}: in {inp:?}\n  out {o:?}");
 
         // Counters never wrap: they saturate (the widths are the ports').
@@ -169,7 +173,7 @@ fn check_trace(p: &Params, inputs: &[CoreInputs], seen: &mut Seen) -> Vec<CoreOu
             seen.speeds += 6;
         }
 
-        if inp.reset {
+        if resets_at(k) {
             // Reset clears every register the user reads.
             assert_eq!(
                 (
@@ -265,7 +269,7 @@ fn check_trace(p: &Params, inputs: &[CoreInputs], seen: &mut Seen) -> Vec<CoreOu
             // edge), the A/B filters' rejected registers (glitch_count rises at the same
             // edge). A flag is set one edge after its event, the event wins over
             // clear_faults, and only an event sets it.
-            if k >= 2 && !inputs[k - 1].reset {
+            if k >= 2 && !resets_at(k - 1) {
                 let pp = outs[k - 2];
                 let illegal_event = pv.illegal_count > pp.illegal_count;
                 let rev_event = pv.rev_error_count > pp.rev_error_count;
