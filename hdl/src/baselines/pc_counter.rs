@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! Fixed-time (PC) counter: net signed steps in consecutive windows of `cfg_dt` cycles of
-//! a free-running time base. Bit-true model: [`golden::baselines::pc_counter::PcCounter`], whose module
-//! docs give the semantics, latency and error bound in full.
+//! a free-running time base. Bit-true model:
+//! [`golden::baselines::pc_counter::PcCounter`], whose module docs give the semantics,
+//! latency and error bound in full.
 //!
 //! Per clock edge (N = counter width, 2..=32):
 //! - time base: [`WindowTimer`](crate::baselines::window_timer::WindowTimer), whose
@@ -20,8 +21,8 @@
 //!   range check and a negation were chained in the tick cycle).
 //!
 //! Ports: `clock`, `reset` (synchronous, active high), `step`, `forward`, `backward` (from
-//! the quadrature decoder; `backward` must be `step` ∧ ¬`forward`), `cfg_dt[N-1:0]` (cycles; sampled at every edge, used from the next
-//! cycle on).
+//! the quadrature decoder; `backward` must be `step` ∧ ¬`forward`), `cfg_dt[N-1:0]`
+//! (cycles; sampled at every edge, used from the next cycle on).
 //! Registered outputs: `count[N-1:0]` (two's complement), `saturated`, `strobe`.
 //! Latency: the count of a window is published by the window's closing tick edge (no
 //! further stage). Reset clears every register.
@@ -39,6 +40,8 @@ pub struct PcCounter<const N: usize> {
     pub step: Signal<In, Bit>,
     /// The step is forward.
     pub forward: Signal<In, Bit>,
+    /// The step is backward: `step` ∧ ¬`forward`, registered by the decoder (so that the
+    /// ±1 adder's direction comes from a flip-flop, not a gate).
     pub backward: Signal<In, Bit>,
     /// Window length, clock cycles (0 counts as 1), used from the next cycle on.
     pub cfg_dt: Signal<In, Bits<N>>,

@@ -12,8 +12,8 @@
 //!   line, so a shaft dithering on it does not drift).
 //!
 //! Ports: `a`, `b` (filtered channels), `cfg_mode[1:0]` (0 = x1, 1 = x2, 2 = x4, 3 = x4 and
-//! `mode_error`). Registered outputs: `step`, `forward` and `backward` (one cycle per step; `forward` and `backward` are
-//! low without a step), `first` (with `step`: the first step since reset, or a step against
+//! `mode_error`). Registered outputs: `step`, `forward` and `backward` (one cycle per step;
+//! `forward` and `backward` are low without a step), `first` (with `step`: the first step since reset, or a step against
 //! the last one, a reversal; low without a step), `direction` (of the last step, 1 =
 //! forward), `illegal` (one cycle),
 //! `illegal_seen` (sticky), `illegal_count[G-1:0]` (saturating). `mode_error` is

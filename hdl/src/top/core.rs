@@ -9,8 +9,8 @@
 //! enc_z ─ TwoFlopSync ─ GlitchFilter ────────────────────────┘ (z)
 //!                          step, forward ─┬─ Timebase + SyncEstimator ─ nep, ndt ─ SpeedCalc ─ SpeedHold ─ speed_n1..n3
 //!                                         └─ PcCounter, EtTimer, MtCounter ─ BaselineSpeeds ─ speed_pc, speed_et, speed_mt
-//! ModeReset (registered cfg_mode and the registered reset: `reset` or a mode change), Startup (holds decoder
-//! and position counter through the filter delay), FaultFlags.
+//! ModeReset (registered cfg_mode and the registered reset: `reset` or a mode change),
+//! Startup (holds decoder and position counter through the filter delay), FaultFlags.
 //! ```
 //!
 //! The port table, widths and latencies are in docs/architecture.md and in the generated
