@@ -151,7 +151,14 @@ fn request(rng: &mut SplitMix, lines: u32, bits: u32) -> SpanRequest {
 }
 
 /// Drives `len` cycles (after a reset) from `seed` through `model` and `each`, starting jobs
-/// only while the model is idle and holding their inputs until `valid`.
+/// only while the model is idle and holding their inputs until `valid`; then, if no result
+/// came out (a reset can abandon the only job of a short run), without resets until one
+/// does, at most `DRAIN` cycles more.
+/// The most cycles `run` adds after `len` to see a result: an idle cycle starts a job with
+/// probability at least 1/41 and a job lasts N + 68 ≤ 100 edges, so 2 000 cycles without a
+/// result has odds below e^−45.
+const DRAIN: usize = 2_000;
+
 fn run(
     seed: u64,
     lines: u32,
@@ -168,9 +175,14 @@ fn run(
     each(&first, model.step(&first))?;
     let (mut held, mut busy, mut valids) = (None, false, 0);
     let mut gap = [0u64, 1, 5, 40][(rng.next() % 4) as usize];
-    for _ in 0..len {
+    for k in 0..len + DRAIN {
+        let draining = k >= len;
+        if draining && valids > 0 {
+            break;
+        }
+        let reset_draw = rng.next().is_multiple_of(500);
         let mut c = In {
-            reset: rng.next().is_multiple_of(500),
+            reset: reset_draw && !draining,
             start: false,
             req: request(&mut rng, lines, bits),
         };
