@@ -60,7 +60,10 @@ proptest! {
         coef in (-(1i64 << 31)..(1i64 << 31), -(1i64 << 31)..(1i64 << 31)),
         realistic in any::<bool>(),
         arm_delay in 0u64..3_000,
-        early_arm in prop::option::of(3u64..200),
+        // An early arm from edge 4: `disc_inputs` holds reset for edges 0..=2, and the
+        // registered reset (reset_to_effect = 1) clears the top at edges 1..=3, an arm
+        // sampled at edge 3 with it.
+        early_arm in prop::option::of(4u64..200),
     ) {
         let p = small(lines);
         let disc = EccentricDisc::new(lines, Eccentricity::new(Model::Rigid, e, theta0).unwrap()).unwrap();
