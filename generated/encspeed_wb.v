@@ -1277,11 +1277,17 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
-    reg  [23:0] div$rem;
-    reg  div$bit_in;
-    reg  [23:0] div$den;
-    wire  [23:0] div$next_rem;
-    wire  div$fits;
+    reg  rem_neg$d;
+    wire  rem_neg$q;
+    reg  rem_neg$clock;
+    reg  second$d;
+    wire  second$q;
+    reg  second$clock;
+    reg  div_add$clock;
+    reg  [23:0] div_add$a;
+    reg  [23:0] div_add$b;
+    reg  div_add$carry_in;
+    wire  [23:0] div_add$sum;
     reg  sel_neg$d;
     wire  sel_neg$q;
     reg  sel_neg$clock;
@@ -1313,8 +1319,17 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     reg  mul_md_msb;
     reg  mul_sum_msb;
     reg  mul_carry;
-    reg  fits;
-    reg  [23:0] next_rem;
+    reg  [23:0] shifted;
+    reg  [23:0] operand;
+    reg  rem_msb;
+    reg  shifted_msb;
+    reg  operand_msb;
+    reg  sum_msb;
+    reg  both_msb;
+    reg  either_msb;
+    reg  neg_if_sum_msb;
+    reg  neg_if_no_sum_msb;
+    reg  next_neg;
     reg  [40:0] half;
     reg  round_bit;
     reg  [40:0] addend;
@@ -1497,12 +1512,22 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         .q(valid_reg$q),
         .clock(valid_reg$clock)
     );
-    encspeed_wb$core$baseline$div div(
-        .rem(div$rem),
-        .bit_in(div$bit_in),
-        .den(div$den),
-        .next_rem(div$next_rem),
-        .fits(div$fits)
+    encspeed_wb$core$baseline$rem_neg rem_neg(
+        .d(rem_neg$d),
+        .q(rem_neg$q),
+        .clock(rem_neg$clock)
+    );
+    encspeed_wb$core$baseline$second second(
+        .d(second$d),
+        .q(second$q),
+        .clock(second$clock)
+    );
+    encspeed_wb$core$baseline$div_add div_add(
+        .clock(div_add$clock),
+        .a(div_add$a),
+        .b(div_add$b),
+        .carry_in(div_add$carry_in),
+        .sum(div_add$sum)
     );
     encspeed_wb$core$baseline$sel_neg sel_neg(
         .d(sel_neg$d),
@@ -1555,6 +1580,8 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         mul_a$clock = clock;
         mul_q$clock = clock;
         part_rem$clock = clock;
+        rem_neg$clock = clock;
+        second$clock = clock;
         den$clock = clock;
         dq$clock = clock;
         upper_all_ones$clock = clock;
@@ -1593,6 +1620,8 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         mul_a$d = mul_a$q;
         mul_q$d = mul_q$q;
         part_rem$d = part_rem$q;
+        rem_neg$d = rem_neg$q;
+        second$d = second$q;
         den$d = den$q;
         dq$d = dq$q;
         upper_all_ones$d = upper_all_ones$q;
@@ -1801,11 +1830,35 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         end
         mul_sum_msb = (mul_sum & n_msb) != n_zero;
         mul_carry = mul_q0 & ((mul_a_msb & mul_md_msb) | ((mul_a_msb | mul_md_msb) & (~mul_sum_msb)));
-        div$rem = part_rem$q;
-        div$bit_in = (dq$q & s_msb) != s_zero;
-        div$den = den$q;
-        fits = div$fits;
-        next_rem = div$next_rem;
+        shifted = part_rem$q << sh_one;
+        if ((dq$q & s_msb) != s_zero) begin
+            shifted = (part_rem$q << sh_one) | n_one;
+        end
+        div_add$clock = clock;
+        div_add$a = shifted;
+        operand = ~den$q;
+        div_add$carry_in = 1'b1;
+        if (rem_neg$q) begin
+            operand = den$q;
+            div_add$carry_in = 1'b0;
+        end
+        div_add$b = operand;
+        rem_msb = (part_rem$q & n_msb) != n_zero;
+        shifted_msb = (shifted & n_msb) != n_zero;
+        operand_msb = (operand & n_msb) != n_zero;
+        sum_msb = (div_add$sum & n_msb) != n_zero;
+        both_msb = shifted_msb & operand_msb;
+        either_msb = shifted_msb | operand_msb;
+        neg_if_sum_msb = ~(rem_msb | both_msb);
+        neg_if_no_sum_msb = ~(rem_msb | either_msb);
+        if (rem_neg$q) begin
+            neg_if_sum_msb = ~(rem_msb & both_msb);
+            neg_if_no_sum_msb = ~(rem_msb & either_msb);
+        end
+        next_neg = neg_if_no_sum_msb;
+        if (sum_msb) begin
+            next_neg = neg_if_sum_msb;
+        end
         sel_neg$d = w_et_neg$q;
         sel_zero$d = w_et_zero$q;
         sel_sat$d = 1'b0;
@@ -2008,6 +2061,8 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         end
         if (take | (state$q == st_setup)) begin
             part_rem$d = load_rem;
+            rem_neg$d = 1'b0;
+            second$d = 1'b0;
             dq$d = load_dq;
             count$d = count_first;
             state$d = st_step;
@@ -2033,26 +2088,30 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
             phase$d = 1'b1;
         end
         if (state$q == st_step) begin
-            part_rem$d = next_rem;
-            dq$d = dq$q << sh_one;
-            if (fits) begin
-                dq$d = (dq$q << sh_one) | s_one;
-            end
-            count$d = count$q - count_one;
-            if ((~phase$q) & (count$q > count_mul_end)) begin
-                mul_a$d = mul_sum >> sh_one;
-                if (mul_carry) begin
-                    mul_a$d = (mul_sum >> sh_one) | n_msb;
+            second$d = ~second$q;
+            if (second$q) begin
+                part_rem$d = div_add$sum;
+                rem_neg$d = next_neg;
+                dq$d = dq$q << sh_one;
+                if (~next_neg) begin
+                    dq$d = (dq$q << sh_one) | s_one;
                 end
-                mul_q$d = mul_q$q >> sh_one;
-                if ((mul_sum & n_one) != n_zero) begin
-                    mul_q$d = (mul_q$q >> sh_one) | n_msb;
+                count$d = count$q - count_one;
+                if ((~phase$q) & (count$q > count_mul_end)) begin
+                    mul_a$d = mul_sum >> sh_one;
+                    if (mul_carry) begin
+                        mul_a$d = (mul_sum >> sh_one) | n_msb;
+                    end
+                    mul_q$d = mul_q$q >> sh_one;
+                    if ((mul_sum & n_one) != n_zero) begin
+                        mul_q$d = (mul_q$q >> sh_one) | n_msb;
+                    end
                 end
-            end
-            if (count$q == count_zero) begin
-                state$d = st_setup;
-                if (phase$q) begin
-                    state$d = st_finish;
+                if (count$q == count_zero) begin
+                    state$d = st_setup;
+                    if (phase$q) begin
+                        state$d = st_finish;
+                    end
                 end
             end
         end
@@ -2135,48 +2194,143 @@ module encspeed_wb$core$baseline$den(d,q,clock);
 endmodule // encspeed_wb$core$baseline$den
 
 
-module encspeed_wb$core$baseline$div(rem,bit_in,den,next_rem,fits);
+module encspeed_wb$core$baseline$div_add(clock,a,b,carry_in,sum);
     
     // Module arguments
-    input wire  [23:0] rem;
-    input wire  bit_in;
-    input wire  [23:0] den;
-    output reg  [23:0] next_rem;
-    output reg  fits;
+    input wire  clock;
+    input wire  [23:0] a;
+    input wire  [23:0] b;
+    input wire  carry_in;
+    output reg  [23:0] sum;
     
     // Constant declarations
     localparam  zero = 24'h0;
     localparam  one = 24'h1;
-    localparam  msb = 24'h800000;
+    localparam  low_mask = 24'hfff;
+    localparam  low_carry = 24'h2000;
     localparam  sh_one = 8'h1;
+    localparam  sh_low = 8'hc;
+    
+    // Stub signals
+    reg  [23:0] low$d;
+    wire  [23:0] low$q;
+    reg  low$clock;
+    reg  [23:0] high_a_reg$d;
+    wire  [23:0] high_a_reg$q;
+    reg  high_a_reg$clock;
+    reg  [23:0] high_b_reg$d;
+    wire  [23:0] high_b_reg$q;
+    reg  high_b_reg$clock;
     
     // Local signals
-    reg  [23:0] shifted;
-    reg  [23:0] diff;
-    reg  shifted_msb;
-    reg  den_msb;
-    reg  borrow;
-    reg  l_fits;
+    reg  [23:0] low_a;
+    reg  [23:0] low_b;
+    reg  mid_carry;
+    reg  [23:0] high_a;
+    reg  [23:0] high_b;
+    reg  [23:0] high_sum;
+    
+    // Sub module instances
+    encspeed_wb$core$baseline$div_add$low low(
+        .d(low$d),
+        .q(low$q),
+        .clock(low$clock)
+    );
+    encspeed_wb$core$baseline$div_add$high_a_reg high_a_reg(
+        .d(high_a_reg$d),
+        .q(high_a_reg$q),
+        .clock(high_a_reg$clock)
+    );
+    encspeed_wb$core$baseline$div_add$high_b_reg high_b_reg(
+        .d(high_b_reg$d),
+        .q(high_b_reg$q),
+        .clock(high_b_reg$clock)
+    );
     
     // Update code
     always @(*) begin
-        shifted = rem << sh_one;
-        if (bit_in) begin
-            shifted = (rem << sh_one) | one;
+        low$clock = clock;
+        high_a_reg$clock = clock;
+        high_b_reg$clock = clock;
+        low$d = low$q;
+        high_a_reg$d = high_a_reg$q;
+        high_b_reg$d = high_b_reg$q;
+        low_a = (a & low_mask) << sh_one;
+        if (carry_in) begin
+            low_a = ((a & low_mask) << sh_one) | one;
         end
-        diff = shifted - den;
-        shifted_msb = (shifted & msb) != zero;
-        den_msb = (den & msb) != zero;
-        borrow = ((~shifted_msb) & den_msb) | ((~(shifted_msb ^ den_msb)) & ((diff & msb) != zero));
-        l_fits = ((rem & msb) != zero) | (~borrow);
-        next_rem = shifted;
-        if (l_fits) begin
-            next_rem = diff;
+        low_b = ((b & low_mask) << sh_one) | one;
+        low$d = low_a + low_b;
+        mid_carry = (low$q & low_carry) != zero;
+        high_a_reg$d = a >> sh_low;
+        high_b_reg$d = b >> sh_low;
+        high_a = high_a_reg$q << sh_one;
+        if (mid_carry) begin
+            high_a = (high_a_reg$q << sh_one) | one;
         end
-        fits = l_fits;
+        high_b = (high_b_reg$q << sh_one) | one;
+        high_sum = high_a + high_b;
+        sum = ((high_sum >> sh_one) << sh_low) | ((low$q >> sh_one) & low_mask);
     end
     
-endmodule // encspeed_wb$core$baseline$div
+endmodule // encspeed_wb$core$baseline$div_add
+
+
+module encspeed_wb$core$baseline$div_add$high_a_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$div_add$high_a_reg
+
+
+module encspeed_wb$core$baseline$div_add$high_b_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$div_add$high_b_reg
+
+
+module encspeed_wb$core$baseline$div_add$low(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$div_add$low
 
 
 module encspeed_wb$core$baseline$dq(d,q,clock);
@@ -2386,6 +2540,25 @@ module encspeed_wb$core$baseline$phase(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$baseline$phase
+
+
+module encspeed_wb$core$baseline$rem_neg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$rem_neg
 
 
 module encspeed_wb$core$baseline$req_dt(d,q,clock);
@@ -2696,6 +2869,25 @@ module encspeed_wb$core$baseline$round_add$low(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$baseline$round_add$low
+
+
+module encspeed_wb$core$baseline$second(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$second
 
 
 module encspeed_wb$core$baseline$sel_neg(d,q,clock);

@@ -358,14 +358,15 @@ fn start(r: BaselineRequest) -> BaselineSpeedsInputs {
 
 #[test]
 fn latency_is_fixed_by_hand() {
-    // N = 24, F = 16: S = 41; 1 edge takes the request (and sets up ET), 41 ET steps,
-    // 1 set-up of M/T (the ET quotient into the two-cycle round adder), 41 M/T steps, 1
-    // edge puts the M/T quotient into the adder, 1 edge publishes: 86.
-    assert_eq!(latency_cycles(24, 16), 86);
-    // N = 8, F = 2: 2·11 + 4 = 26; N = 12, F = 8: 2·21 + 4 = 46; N = 32, F = 24: 118.
-    assert_eq!(latency_cycles(8, 2), 26);
-    assert_eq!(latency_cycles(12, 8), 46);
-    assert_eq!(latency_cycles(32, 24), 118);
+    // N = 24, F = 16: S = 41; 1 edge takes the request (and sets up ET), 41 ET steps of
+    // 2 edges, 1 set-up of M/T (the ET quotient into the two-cycle round adder), 41 M/T
+    // steps of 2 edges, 1 edge puts the M/T quotient into the adder, 1 edge publishes:
+    // 1 + 82 + 1 + 82 + 1 + 1 = 168.
+    assert_eq!(latency_cycles(24, 16), 168);
+    // N = 8, F = 2: 4·11 + 4 = 48; N = 12, F = 8: 4·21 + 4 = 88; N = 32, F = 24: 232.
+    assert_eq!(latency_cycles(8, 2), 48);
+    assert_eq!(latency_cycles(12, 8), 88);
+    assert_eq!(latency_cycles(32, 24), 232);
     for (n, fb) in [(8, 2), (8, 4), (12, 8), (24, 16), (32, 24)] {
         let f = fmt(n, fb);
         let l = latency_cycles(n, fb) as usize;

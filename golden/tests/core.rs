@@ -356,18 +356,19 @@ fn latencies_are_as_documented() {
 
 #[test]
 fn baseline_strobe_follows_the_window_end_by_the_block_latency() {
-    // N = 16, F = 16: the baseline block takes 1 + 33 + 1 + 33 + 1 + 1 = 70 edges from the
-    // edge that samples its start, and samples the window end (PC's strobe, which rises with
-    // mt_strobe: one time base) one edge after the edge that raised it: 71.
-    assert_eq!(Latency::new(&params(), 0).window_to_baseline_strobe, 71);
+    // N = 16, F = 16: the baseline block takes 1 + 2·33 + 1 + 2·33 + 1 + 1 = 136 edges from
+    // the edge that samples its start (each of the 33 ET and 33 M/T divider steps takes two
+    // edges), and samples the window end (PC's strobe, which rises with mt_strobe: one time
+    // base) one edge after the edge that raised it: 137.
+    assert_eq!(Latency::new(&params(), 0).window_to_baseline_strobe, 137);
     let o = run_wave(2, 16, true, 10 * DT);
     let windows: Vec<usize> = (0..o.len()).filter(|&k| o[k].mt_strobe).collect();
     let baselines: Vec<usize> = (0..o.len()).filter(|&k| o[k].baseline_strobe).collect();
     assert!(windows.len() >= 8, "{windows:?}");
     for w in &windows {
-        if w + 71 < o.len() {
+        if w + 137 < o.len() {
             assert!(
-                baselines.contains(&(w + 71)),
+                baselines.contains(&(w + 137)),
                 "window end {w}: {baselines:?}"
             );
         }
@@ -376,8 +377,8 @@ fn baseline_strobe_follows_the_window_end_by_the_block_latency() {
     // too, without an mt_strobe).
     assert!(baselines
         .iter()
-        .filter(|&&b| b > windows[0] + 71)
-        .all(|b| windows.contains(&(b - 71))));
+        .filter(|&&b| b > windows[0] + 137)
+        .all(|b| windows.contains(&(b - 137))));
 }
 
 #[test]

@@ -543,20 +543,20 @@ fn hardware_latency_and_read_instant_by_hand() {
     // 3600 r/min, T_s = 1 ms, 1 MHz: dt = 1000 cycles. Counter width N by hand: dt and
     // the timeout of 1000 dt need 10 bits, +1 = 11; the ET period at the slowest speed is
     // 60/(500·3605.09·0.98) s = 33.97 cycles, rounded up plus 2 = 36, and 2·(1000 + 36) =
-    // 2072 needs 12 bits, +1 = 13. The baseline block takes L = 2·(N + F + 1) + 4 =
-    // 2·30 + 4 = 64 edges (F = 16). A level sampled at cycle c reaches the counters 4 edges
+    // 2072 needs 12 bits, +1 = 13. The baseline block takes L = 4·(N + F + 1) + 4 =
+    // 4·30 + 4 = 124 edges (F = 16). A level sampled at cycle c reaches the counters 4 edges
     // later (docs/ports.md); the time base ticks at edge T; PC's window ends with the step
     // of edge T − 1, ET's and M/T's with that of edge T; the block starts at T + 1 and
-    // publishes at T + 1 + L. So D = 64 + 1 + 4 + 1 = 70 cycles for PC, 69 for ET and
-    // M/T, and the strobe is at cycle k·dt + 4 + 64 (reset, sampled at edges 0..=2, acts
+    // publishes at T + 1 + L. So D = 124 + 1 + 4 + 1 = 130 cycles for PC, 129 for ET and
+    // M/T, and the strobe is at cycle k·dt + 4 + 124 (reset, sampled at edges 0..=2, acts
     // at edges 1..=3, one edge later (docs/ports.md); the time base leaves its last reset
     // edge with its phase at 0, so T = k·dt + 3).
     use Estimator::{Et, Mt, Pc};
-    for (est, d) in [(Pc, 70u64), (Et, 69), (Mt, 69)] {
+    for (est, d) in [(Pc, 130u64), (Et, 129), (Mt, 129)] {
         let e = exp(hw(est, 3600.0, 1e-3));
         assert_eq!(e.core_params().unwrap().counter_bits(), 13, "{est}");
         assert_eq!(e.hardware_latency_cycles(), Some(d), "{est}");
-        assert_eq!(e.read_offset_cycles(), 68, "{est}");
+        assert_eq!(e.read_offset_cycles(), 128, "{est}");
         let op = *e.operating_point();
         let paper = match est {
             Pc => FreqModel::Product(pc_model(&op)),

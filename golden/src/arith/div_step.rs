@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
-//! One step of restoring radix-2 division at W bits, as every divider of the IP does it
-//! (the block `hdl::DivStep`, used by `SeqDivider`, `BaselineSpeeds` and `EccMtSpeed`,
-//! and `hdl::SpeedCalc`'s step over two cycles): with partial remainder R and the bit b brought down, the trial value
-//! 2R + b has W + 1 bits; its top bit is R's most significant bit (the carry) and its low W
+//! One step of restoring radix-2 division at W bits (the block `hdl::DivStep`, used by
+//! `SeqDivider` and `EccMtSpeed`; `hdl::SpeedCalc` and `hdl::BaselineSpeeds` take
+//! non-restoring steps over two cycles, with the same quotient bits): with partial
+//! remainder R and the bit b brought down, the trial value 2R + b has W + 1 bits; its top
+//! bit is R's most significant bit (the carry) and its low W
 //! bits are `shifted`. The quotient bit is `fits` = carry or shifted ≥ den, and the next
 //! remainder is shifted − den (W-bit wrapping, exact when R < den) if it fits, else
 //! shifted. Over the dividers' invariant R < den this is the long division of

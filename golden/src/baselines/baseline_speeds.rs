@@ -64,7 +64,7 @@
 //! marks it pending; a start while busy replaces a request that has not begun, so the
 //! **last** start's values are always computed. At the first edge at which the block is idle
 //! and a request is pending it takes the request; [`latency_cycles`]`(N, F)` =
-//! 2·(N + F + 1) + 4 edges after a start edge (block idle) the three outputs change together
+//! 4·(N + F + 1) + 4 edges after a start edge (block idle) the three outputs change together
 //! and `valid` is high for one cycle. `busy` is high while a computation runs or a request
 //! is pending. Starts at least L edges apart each get their own `valid`, exactly L edges
 //! after the start. `reset` (synchronous, active high) wins over `start`: outputs 0, `valid`
@@ -89,13 +89,14 @@ pub const fn speed_bits(counter_bits: u32, frac_bits: u32) -> u32 {
 }
 
 /// Clock edges from the edge that samples a `start` (block idle) to the edge after which
-/// `valid` is high: 2·(N + F + 1) + 4 (one edge takes the request and sets up the ET
-/// division, S = N + F + 1 ET steps (the multiplier runs during the first N), one edge
-/// puts the ET quotient into the two-cycle round-and-sign adder and sets up the M/T
-/// division (the first M/T step stages the ET result), S M/T steps, one edge puts the
-/// M/T quotient into the adder, one edge publishes).
+/// `valid` is high: 4·(N + F + 1) + 4 (one edge takes the request and sets up the ET
+/// division, S = N + F + 1 ET steps of two edges each (the divider's adder is split by a
+/// register; the multiplier runs during the first N steps), one edge puts the ET quotient
+/// into the two-cycle round-and-sign adder and sets up the M/T division (the first M/T
+/// step stages the ET result), S M/T steps of two edges, one edge puts the M/T quotient
+/// into the adder, one edge publishes).
 pub const fn latency_cycles(counter_bits: u32, frac_bits: u32) -> u32 {
-    2 * speed_bits(counter_bits, frac_bits) + 4
+    4 * speed_bits(counter_bits, frac_bits) + 4
 }
 
 /// `mode_shift` as used: 0, 1, 2; 3 counts as 2.
@@ -500,8 +501,8 @@ mod tests {
     fn widths_and_latency() {
         assert_eq!(speed_bits(24, 16), 41);
         // 1 + S + 1 + S + 1 + 1 edges: S = 41 and S = 11.
-        assert_eq!(latency_cycles(24, 16), 86);
-        assert_eq!(latency_cycles(8, 2), 26);
+        assert_eq!(latency_cycles(24, 16), 168);
+        assert_eq!(latency_cycles(8, 2), 48);
         assert_eq!(effective_shift(3), 2);
         assert_eq!(effective_dt(0), 1);
     }

@@ -218,7 +218,7 @@ pub(crate) fn paper_model(estimator: Estimator, op: &OperatingPoint) -> FreqMode
 }
 
 /// Clock edges from a `start` of the baseline speeds block to its `baseline_strobe`:
-/// 2·(N + F + 1) + 4 ([`crate::baselines::baseline_speeds::latency_cycles`]).
+/// 4·(N + F + 1) + 4 ([`crate::baselines::baseline_speeds::latency_cycles`]).
 pub fn baseline_latency_cycles(p: &Params) -> u64 {
     u64::from(crate::baselines::baseline_speeds::latency_cycles(
         p.counter_bits(),

@@ -191,7 +191,7 @@ pub struct Latency {
     pub edge_to_speed_strobe: u32,
     /// From the edge that raised `mt_strobe` (a window end of the PC and M/T counters) to
     /// the edge after which `baseline_strobe` shows the window's speeds: the baseline
-    /// block samples the start one edge later and takes 2·(N + F + 1) + 4 edges.
+    /// block samples the start one edge later and takes 4·(N + F + 1) + 4 edges.
     pub window_to_baseline_strobe: u32,
     /// From the edge that samples `reset` to the edge at which the core's registers reset:
     /// the core registers its reset once (a flip-flop at the head of its widest fan-out), 1.

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
-//! One step of restoring radix-2 division at W bits, combinational: the arithmetic every
-//! divider of the IP repeats once per quotient bit (`SeqDivider`, `BaselineSpeeds`,
-//! `EccMtSpeed`; each keeps its own schedule and registers; `SpeedCalc` does the same step
-//! over two cycles on a `TwoCycleAdder`). Bit-true model:
+//! One step of restoring radix-2 division at W bits, combinational: the arithmetic
+//! `SeqDivider` and `EccMtSpeed` repeat once per quotient bit, each with its own schedule
+//! and registers (`SpeedCalc` and `BaselineSpeeds` take non-restoring steps over two cycles
+//! on a `TwoCycleAdder`: the same quotient bits). Bit-true model:
 //! [`golden::arith::div_step::div_step`].
 //!
 //! With partial remainder `rem` (R) and the bit `bit_in` (b) brought down, the trial value

@@ -53,8 +53,8 @@
 //! # Timing
 //!
 //! A `start` sampled at edge k while idle gives `valid` after edge k + L, with
-//! L = 2·(N + F + 1) + 4 ([`golden::baselines::baseline_speeds::latency_cycles`]; 86 for N = 24,
-//! F = 16), whatever the operands. `busy` is high after edges k … k + L − 1. A `start`
+//! L = 4·(N + F + 1) + 4 ([`golden::baselines::baseline_speeds::latency_cycles`]; 168 for
+//! N = 24, F = 16), whatever the operands. `busy` is high after edges k … k + L − 1. A `start`
 //! while busy latches its inputs into the one-deep request register (replacing a request
 //! that has not begun) and is served at the edge after the current `valid`, so the values of
 //! the last start are always computed; starts at least L cycles apart each get their own
@@ -62,7 +62,9 @@
 //!
 //! # Datapath
 //!
-//! Schedule, state register IDLE → STEP ×S → SETUP → STEP ×S → FINISH → OUTPUT → IDLE:
+//! Schedule, state register IDLE → STEP ×S → SETUP → STEP ×S → FINISH → OUTPUT → IDLE,
+//! every STEP two cycles (`second`: the divider's adder is split by a register, and the
+//! step's registers are written at the second cycle's edge):
 //!
 //! * **Take** (IDLE with a request pending): the request is copied into the working
 //!   registers and the divider is set up for ET at once: X = dt (A = 0, Q = dt), den =
@@ -80,14 +82,28 @@
 //!   and **OUTPUT** writes `speed_pc` (the working copy of `pc_count` shifted), `speed_et`
 //!   (staged) and `speed_mt` (the adder's sum) together with `valid`.
 //!
-//! **Divider** (restoring, radix 2, [`golden::baselines::baseline_speeds::hardware_magnitude`]): for
+//! **Divider** (radix 2, [`golden::baselines::baseline_speeds::hardware_magnitude`]): for
 //! num' = X·2^(2−s) (2N + 2 bits, never formed) the partial remainder R (N bits) is preloaded
 //! with num' >> (N + 2) = A >> s, and an S-bit register `dq` with the low N + 2 bits of num'
 //! (A's low s bits, Q, 2 − s zeros) at its top. Each step shifts one numerator bit out of
 //! the top of `dq` into 2R + b and one quotient bit into its bottom, so after S steps `dq`
 //! holds q = ⌊X·2^(F+1−s)/den⌋ (S bits, since R < den) without ever forming X·2^F. The
-//! trial 2R + b needs N + 1 bits: its top bit is R's, and 2R + b ≥ den is read off the
-//! borrow of one N-bit subtraction: the step is [`DivStep`](crate::arith::div_step::DivStep).
+//! step is non-restoring, as [`SpeedCalc`](crate::SpeedCalc)'s: R ∈ [−den, den) is held as
+//! N bits `part_rem` (R modulo 2^N) and a sign `rem_neg`; a step from R ≥ 0 forms
+//! 2R + b − den, from R < 0 2R + b + den, in one N-bit
+//! [`TwoCycleAdder`](crate::TwoCycleAdder) (operand den or ~den and the carry in chosen by
+//! `rem_neg`, a register), whose sum is the new `part_rem` as it stands; the quotient bit
+//! is R' ≥ 0. Its quotient bits are those of restoring division: where restoring division
+//! holds R_r, this one holds R_r or R_r − den, and 2(R_r − den) + b + den = 2R_r + b − den.
+//! R' needs N + 1 bits, and rust-hdl cannot size a signal N + 1 from a generic N, so its
+//! sign is read off the carry out of the N-bit sum: with c = R's bit N − 1,
+//! R' = (c + co − 1)·2^N + sum from R ≥ 0 (negative unless c or co) and
+//! (c + co − 2)·2^N + sum from R < 0 (negative unless c and co), and co is both operands'
+//! top bits when the sum's top bit is 1, either of them when it is 0: both candidate signs
+//! are formed from the registers and the sum's top bit chooses. Why two cycles: in one, the
+//! step (the sign register's fan-out into the operand, a 24-bit carry chain, the sign
+//! logic and the registers' multiplexers) was the critical path of `encspeed_wb` on the
+//! iCE40 HX8K, 90.8 to 99.2 MHz over placement seeds, restoring or non-restoring alike.
 //! The magnitude is (q + 1) >> 1; q all ones (which would round up past the format; its
 //! bits above bit 0 are tested on `dq` one edge earlier, a register) and a preload not below den
 //! saturate to 2^(N+F) − 1. Rounding
@@ -104,14 +120,16 @@
 //! # Resources
 //!
 //! Registers: the request (5N + 6), working copies and flags (2N + 11), the multiplier (3N),
-//! the divider (2N + S), staging and outputs (4S + 1), the round adder's low sum and high
-//! operand (about S + 3), a 6-bit step counter and 4 control bits. Adders: the divider's
-//! N-bit trial subtraction, the multiplier's N-bit add, the S-bit round-and-sign adder in
+//! the divider (2N + S + 2) and its two-cycle adder's low sum and high operands (about
+//! 1.5N), staging and outputs (4S + 1), the round adder's low sum and high operand (about
+//! S + 3), a 6-bit step counter and 4 control bits. Adders: the divider's N-bit add or
+//! subtract in two halves, the multiplier's N-bit add, the S-bit round-and-sign adder in
 //! two halves, the N-bit saturation comparison. yosys 0.23 `synth_ice40 -top
 //! 'encspeed_core$baseline'; stat` on generated/encspeed_core.v (the block at N = 24,
-//! F = 16, S = 41) maps it to 549 flip-flops (constant bits removed), 636 LUT4 and 119
-//! carry cells; 501, 677 and 118 with the round-and-sign adder in one cycle. (SpeedCalc,
-//! three divisions of 2N + 1 bits: 604, 792 and 277.)
+//! F = 16, S = 41) maps it to 588 flip-flops (constant bits removed), 673 LUT4 and 119
+//! carry cells (549, 636 and 119 with the restoring step in one cycle; 501, 677 and 118
+//! with the round-and-sign adder in one cycle as well). (SpeedCalc, three divisions of
+//! 2N + 1 bits: 604, 792 and 277.)
 
 use rust_hdl::prelude::*;
 
@@ -246,11 +264,32 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     mul_md_msb: Signal<Local, Bit>,
     mul_sum_msb: Signal<Local, Bit>,
     mul_carry: Signal<Local, Bit>,
-    // Divider step.
-    /// One restoring division step at N bits.
-    div: crate::arith::div_step::DivStep<N>,
-    fits: Signal<Local, Bit>,
-    next_rem: Signal<Local, Bits<N>>,
+    // Divider step: non-restoring, over two cycles.
+    /// The partial remainder is negative (`part_rem` holds it modulo 2^N).
+    rem_neg: DFF<Bit>,
+    /// The second cycle of a step: the divider's sum is ready.
+    second: DFF<Bit>,
+    /// 2R + b modulo 2^N.
+    shifted: Signal<Local, Bits<N>>,
+    /// shifted + (den if R < 0, else ~den) + (0 if R < 0, else 1): R' modulo 2^N, ready in
+    /// the step's second cycle (the operands are registers held for both).
+    div_add: crate::arith::two_cycle_adder::TwoCycleAdder<N>,
+    /// den if R < 0, else ~den.
+    operand: Signal<Local, Bits<N>>,
+    rem_msb: Signal<Local, Bit>,
+    shifted_msb: Signal<Local, Bit>,
+    operand_msb: Signal<Local, Bit>,
+    sum_msb: Signal<Local, Bit>,
+    /// Both operands' top bits are 1.
+    both_msb: Signal<Local, Bit>,
+    /// Either operand's top bit is 1.
+    either_msb: Signal<Local, Bit>,
+    /// R' < 0 if the sum's top bit is 1 (carry out = both operands' top bits).
+    neg_if_sum_msb: Signal<Local, Bit>,
+    /// R' < 0 if the sum's top bit is 0 (carry out = either operand's top bit).
+    neg_if_no_sum_msb: Signal<Local, Bit>,
+    /// R' < 0.
+    next_neg: Signal<Local, Bit>,
     // Round and sign.
     /// The sign, zero and saturation flags of the division being rounded, registered from
     /// `phase` at every edge: `phase` and the flags are steady for many cycles before
@@ -382,9 +421,20 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             mul_md_msb: Default::default(),
             mul_sum_msb: Default::default(),
             mul_carry: Default::default(),
-            div: Default::default(),
-            fits: Default::default(),
-            next_rem: Default::default(),
+            rem_neg: Default::default(),
+            second: Default::default(),
+            shifted: Default::default(),
+            div_add: Default::default(),
+            operand: Default::default(),
+            rem_msb: Default::default(),
+            shifted_msb: Default::default(),
+            operand_msb: Default::default(),
+            sum_msb: Default::default(),
+            both_msb: Default::default(),
+            either_msb: Default::default(),
+            neg_if_sum_msb: Default::default(),
+            neg_if_no_sum_msb: Default::default(),
+            next_neg: Default::default(),
             sel_neg: Default::default(),
             sel_zero: Default::default(),
             sel_sat: Default::default(),
@@ -451,6 +501,8 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             mul_a,
             mul_q,
             part_rem,
+            rem_neg,
+            second,
             den,
             dq,
             upper_all_ones,
@@ -534,13 +586,42 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             & ((self.mul_a_msb.val() & self.mul_md_msb.val())
                 | ((self.mul_a_msb.val() | self.mul_md_msb.val()) & (!self.mul_sum_msb.val())));
 
-        // One restoring division step (DivStep): bring down the next numerator bit,
-        // subtract if 2R + b ≥ den.
-        self.div.rem.next = self.part_rem.q.val();
-        self.div.bit_in.next = (self.dq.q.val() & self.s_msb.val()) != self.s_zero.val();
-        self.div.den.next = self.den.q.val();
-        self.fits.next = self.div.fits.val();
-        self.next_rem.next = self.div.next_rem.val();
+        // One non-restoring division step over two cycles (module docs: Divider): bring
+        // down the next numerator bit, subtract den from 2R + b if R ≥ 0, add it if R < 0.
+        // The sum is R' modulo 2^N; its sign needs the adder's carry out, which is both
+        // operands' top bits when the sum's top bit is 1 and either of them when it is 0:
+        // both candidate signs come from the operands, and the sum's top bit chooses.
+        self.shifted.next = self.part_rem.q.val() << self.sh_one.val();
+        if (self.dq.q.val() & self.s_msb.val()) != self.s_zero.val() {
+            self.shifted.next = (self.part_rem.q.val() << self.sh_one.val()) | self.n_one.val();
+        }
+        self.div_add.clock.next = self.clock.val();
+        self.div_add.a.next = self.shifted.val();
+        self.operand.next = !self.den.q.val();
+        self.div_add.carry_in.next = true;
+        if self.rem_neg.q.val() {
+            self.operand.next = self.den.q.val();
+            self.div_add.carry_in.next = false;
+        }
+        self.div_add.b.next = self.operand.val();
+        self.rem_msb.next = (self.part_rem.q.val() & self.n_msb.val()) != self.n_zero.val();
+        self.shifted_msb.next = (self.shifted.val() & self.n_msb.val()) != self.n_zero.val();
+        self.operand_msb.next = (self.operand.val() & self.n_msb.val()) != self.n_zero.val();
+        self.sum_msb.next = (self.div_add.sum.val() & self.n_msb.val()) != self.n_zero.val();
+        self.both_msb.next = self.shifted_msb.val() & self.operand_msb.val();
+        self.either_msb.next = self.shifted_msb.val() | self.operand_msb.val();
+        // R ≥ 0: R' = (c + co − 1)·2^N + sum; R < 0: R' = (c + co − 2)·2^N + sum
+        // (c = R's bit N − 1, co the carry out).
+        self.neg_if_sum_msb.next = !(self.rem_msb.val() | self.both_msb.val());
+        self.neg_if_no_sum_msb.next = !(self.rem_msb.val() | self.either_msb.val());
+        if self.rem_neg.q.val() {
+            self.neg_if_sum_msb.next = !(self.rem_msb.val() & self.both_msb.val());
+            self.neg_if_no_sum_msb.next = !(self.rem_msb.val() & self.either_msb.val());
+        }
+        self.next_neg.next = self.neg_if_no_sum_msb.val();
+        if self.sum_msb.val() {
+            self.next_neg.next = self.neg_if_sum_msb.val();
+        }
 
         // Round and sign with one adder: with q = dq, h = q >> 1 and r = q & 1, the result
         // is (h, or ~h if negative) + (r xor negative). q all ones would round past the
@@ -617,6 +698,8 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
         }
         if self.take.val() | (self.state.q.val() == self.st_setup.val()) {
             self.part_rem.d.next = self.load_rem.val();
+            self.rem_neg.d.next = false;
+            self.second.d.next = false;
             self.dq.d.next = self.load_dq.val();
             self.count.d.next = self.count_first.val();
             self.state.d.next = self.st_step.val();
@@ -643,29 +726,35 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             self.den.d.next = self.w_t.q.val();
             self.phase.d.next = true;
         }
+        // A step takes two cycles: the divider's sum is ready in the second, at whose edge
+        // the step's registers are written; the first only registers the adder's low half.
         if self.state.q.val() == self.st_step.val() {
-            self.part_rem.d.next = self.next_rem.val();
-            self.dq.d.next = self.dq.q.val() << self.sh_one.val();
-            if self.fits.val() {
-                self.dq.d.next = (self.dq.q.val() << self.sh_one.val()) | self.s_one.val();
-            }
-            self.count.d.next = self.count.q.val() - self.count_one.val();
-            if (!self.phase.q.val()) & (self.count.q.val() > self.count_mul_end.val()) {
-                self.mul_a.d.next = self.mul_sum.val() >> self.sh_one.val();
-                if self.mul_carry.val() {
-                    self.mul_a.d.next =
-                        (self.mul_sum.val() >> self.sh_one.val()) | self.n_msb.val();
+            self.second.d.next = !self.second.q.val();
+            if self.second.q.val() {
+                self.part_rem.d.next = self.div_add.sum.val();
+                self.rem_neg.d.next = self.next_neg.val();
+                self.dq.d.next = self.dq.q.val() << self.sh_one.val();
+                if !self.next_neg.val() {
+                    self.dq.d.next = (self.dq.q.val() << self.sh_one.val()) | self.s_one.val();
                 }
-                self.mul_q.d.next = self.mul_q.q.val() >> self.sh_one.val();
-                if (self.mul_sum.val() & self.n_one.val()) != self.n_zero.val() {
-                    self.mul_q.d.next =
-                        (self.mul_q.q.val() >> self.sh_one.val()) | self.n_msb.val();
+                self.count.d.next = self.count.q.val() - self.count_one.val();
+                if (!self.phase.q.val()) & (self.count.q.val() > self.count_mul_end.val()) {
+                    self.mul_a.d.next = self.mul_sum.val() >> self.sh_one.val();
+                    if self.mul_carry.val() {
+                        self.mul_a.d.next =
+                            (self.mul_sum.val() >> self.sh_one.val()) | self.n_msb.val();
+                    }
+                    self.mul_q.d.next = self.mul_q.q.val() >> self.sh_one.val();
+                    if (self.mul_sum.val() & self.n_one.val()) != self.n_zero.val() {
+                        self.mul_q.d.next =
+                            (self.mul_q.q.val() >> self.sh_one.val()) | self.n_msb.val();
+                    }
                 }
-            }
-            if self.count.q.val() == self.count_zero.val() {
-                self.state.d.next = self.st_setup.val();
-                if self.phase.q.val() {
-                    self.state.d.next = self.st_finish.val();
+                if self.count.q.val() == self.count_zero.val() {
+                    self.state.d.next = self.st_setup.val();
+                    if self.phase.q.val() {
+                        self.state.d.next = self.st_finish.val();
+                    }
                 }
             }
         }

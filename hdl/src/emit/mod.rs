@@ -180,7 +180,7 @@ pub fn ports_markdown(p: &Params) -> String {
     md.push_str(&format!(
         "\n`baseline_strobe` rises {} edges after the edge that raised `mt_strobe`: the \
          window end of the PC and M/T counters (the baseline block samples it one edge later \
-         and takes 2(N + F + 1) + 4 edges), whatever `cfg_filter`.\n",
+         and takes 4(N + F + 1) + 4 edges), whatever `cfg_filter`.\n",
         Latency::new(p, 0).window_to_baseline_strobe
     ));
     let l = Latency::new(p, 0);

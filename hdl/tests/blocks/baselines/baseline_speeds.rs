@@ -40,7 +40,7 @@ fn signed(raw: u64) -> i64 {
 }
 
 #[test]
-fn known_answers_by_hand_in_86_cycles() {
+fn known_answers_by_hand_in_168_cycles() {
     let mut uut = Uut::default();
     uut.connect_all();
     // x2, dt = 10: PC −5 → −5·2^15 = −163840; ET period 3 → 10·32768/3 = 109226.67 →
@@ -55,8 +55,9 @@ fn known_answers_by_hand_in_86_cycles() {
         negative: true,
     };
     step(&mut uut, true, &r);
-    // Busy after edges 0 (the start) to 85, valid after edge 86.
-    for k in 1..=86 {
+    // Busy after edges 0 (the start) to 167, valid after edge 168 (1 take, 41 ET steps of
+    // 2 edges, 1 M/T set-up, 41 M/T steps of 2 edges, 1 finish, 1 publication).
+    for k in 1..=168 {
         assert!(uut.busy.val() && !uut.valid.val(), "after edge {}", k - 1);
         step(&mut uut, false, &r);
     }
