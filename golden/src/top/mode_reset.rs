@@ -93,7 +93,7 @@ mod tests {
     }
 
     #[test]
-    fn a_change_at_a_reset_edge_is_not_flagged() {
+    fn a_mode_change_with_reset_resets_once() {
         // Reset with cfg_mode 2 sampled at an edge: the cycle after it resets with mode 2,
         // and no second reset follows, as after a reset from any earlier mode.
         for before in [0u8, 1, 2] {
