@@ -103,7 +103,8 @@
 //! are formed from the registers and the sum's top bit chooses. Why two cycles: in one, the
 //! step (the sign register's fan-out into the operand, a 24-bit carry chain, the sign
 //! logic and the registers' multiplexers) was the critical path of `encspeed_wb` on the
-//! iCE40 HX8K, 90.8 to 99.2 MHz over placement seeds, restoring or non-restoring alike.
+//! iCE40 HX8K on most placement seeds, restoring (97.0 to 101.8 MHz over seeds 1-3) or
+//! non-restoring (90.8 to 102.0 MHz) alike.
 //! The magnitude is (q + 1) >> 1; q all ones (which would round up past the format; its
 //! bits above bit 0 are tested on `dq` one edge earlier, a register) and a preload not below den
 //! saturate to 2^(N+F) − 1. Rounding
