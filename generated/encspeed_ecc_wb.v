@@ -6124,6 +6124,8 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
     reg  down_low_not_zero;
     reg  [31:0] plus_one;
     reg  [31:0] minus_one;
+    reg  [31:0] carry;
+    reg  [31:0] borrow;
     reg  [31:0] low;
     reg  [31:0] high;
     reg  limit_low_all_ones;
@@ -6289,14 +6291,16 @@ module encspeed_ecc_wb$ecc$core$counter(clock,reset,step,forward,first,z,limit,l
         pair = limit_less_one == pos_zero;
         low = position_reg$q & low_mask;
         high = position_reg$q >> low_width;
-        plus_one = ((low + pos_one) & low_mask) | (high << low_width);
+        carry = pos_zero;
         if (low_all_ones$q) begin
-            plus_one = (high + pos_one) << low_width;
+            carry = pos_one;
         end
-        minus_one = ((low - pos_one) & low_mask) | (high << low_width);
+        borrow = pos_zero;
         if (~low_not_zero$q) begin
-            minus_one = ((high - pos_one) << low_width) | low_mask;
+            borrow = pos_one;
         end
+        plus_one = ((low + pos_one) & low_mask) | ((high + carry) << low_width);
+        minus_one = ((low - pos_one) & low_mask) | ((high - borrow) << low_width);
         limit_low_all_ones = (limit & low_mask) == low_mask;
         limit_low_zero = (limit & low_mask) == pos_zero;
         up = plus_one;
@@ -9296,7 +9300,6 @@ module encspeed_ecc_wb$ecc$core$mt$timer(clock,reset,cfg_dt,tick);
     localparam  zero = 24'h0;
     localparam  one = 24'h1;
     localparam  two = 24'h2;
-    localparam  above_one = 24'hfffffe;
     
     // Stub signals
     reg  [23:0] plus_two_reg$d;
@@ -9308,7 +9311,7 @@ module encspeed_ecc_wb$ecc$core$mt$timer(clock,reset,cfg_dt,tick);
     
     // Local signals
     reg  [23:0] plus_two;
-    reg  dt_at_most_one;
+    reg  [23:0] compared;
     
     // Sub module instances
     encspeed_ecc_wb$ecc$core$mt$timer$plus_two_reg plus_two_reg(
@@ -9329,13 +9332,13 @@ module encspeed_ecc_wb$ecc$core$mt$timer(clock,reset,cfg_dt,tick);
         plus_two_reg$d = plus_two_reg$q;
         due$d = due$q;
         plus_two = plus_two_reg$q ^ two;
-        dt_at_most_one = (cfg_dt & above_one) == zero;
         plus_two_reg$d = (plus_two + one) ^ two;
-        due$d = plus_two >= cfg_dt;
+        compared = plus_two;
         if (due$q | reset) begin
             plus_two_reg$d = zero;
-            due$d = dt_at_most_one;
+            compared = one;
         end
+        due$d = compared >= cfg_dt;
         tick = due$q;
     end
     
@@ -9398,6 +9401,7 @@ module encspeed_ecc_wb$ecc$core$pc(clock,reset,step,forward,backward,cfg_dt,coun
     localparam  all_ones = 24'hffffff;
     localparam  msb = 24'h800000;
     localparam  one = 24'h1;
+    localparam  all_ones_less_one = 24'hfffffe;
     localparam  max_pos = 24'h7fffff;
     
     // Stub signals
@@ -9411,6 +9415,12 @@ module encspeed_ecc_wb$ecc$core$pc(clock,reset,step,forward,backward,cfg_dt,coun
     reg  net_hi$d;
     wire  net_hi$q;
     reg  net_hi$clock;
+    reg  lo_all_ones$d;
+    wire  lo_all_ones$q;
+    reg  lo_all_ones$clock;
+    reg  lo_not_zero$d;
+    wire  lo_not_zero$q;
+    reg  lo_not_zero$clock;
     reg  [23:0] count_reg$d;
     wire  [23:0] count_reg$q;
     reg  count_reg$clock;
@@ -9445,6 +9455,16 @@ module encspeed_ecc_wb$ecc$core$pc(clock,reset,step,forward,backward,cfg_dt,coun
         .q(net_hi$q),
         .clock(net_hi$clock)
     );
+    encspeed_ecc_wb$ecc$core$pc$lo_all_ones lo_all_ones(
+        .d(lo_all_ones$d),
+        .q(lo_all_ones$q),
+        .clock(lo_all_ones$clock)
+    );
+    encspeed_ecc_wb$ecc$core$pc$lo_not_zero lo_not_zero(
+        .d(lo_not_zero$d),
+        .q(lo_not_zero$q),
+        .clock(lo_not_zero$clock)
+    );
     encspeed_ecc_wb$ecc$core$pc$count_reg count_reg(
         .d(count_reg$d),
         .q(count_reg$q),
@@ -9465,11 +9485,15 @@ module encspeed_ecc_wb$ecc$core$pc(clock,reset,step,forward,backward,cfg_dt,coun
     always @(*) begin
         net_lo$clock = clock;
         net_hi$clock = clock;
+        lo_all_ones$clock = clock;
+        lo_not_zero$clock = clock;
         count_reg$clock = clock;
         sat_reg$clock = clock;
         strobe_reg$clock = clock;
         net_lo$d = net_lo$q;
         net_hi$d = net_hi$q;
+        lo_all_ones$d = lo_all_ones$q;
+        lo_not_zero$d = lo_not_zero$q;
         count_reg$d = count_reg$q;
         sat_reg$d = sat_reg$q;
         strobe_reg$d = strobe_reg$q;
@@ -9496,23 +9520,38 @@ module encspeed_ecc_wb$ecc$core$pc(clock,reset,step,forward,backward,cfg_dt,coun
             end
             net_lo$d = zero;
             net_hi$d = 1'b0;
+            lo_all_ones$d = 1'b0;
+            lo_not_zero$d = 1'b0;
             if (up) begin
                 net_lo$d = one;
+                lo_not_zero$d = 1'b1;
             end
             if (down) begin
                 net_lo$d = all_ones;
                 net_hi$d = 1'b1;
+                lo_all_ones$d = 1'b1;
+                lo_not_zero$d = 1'b1;
             end
         end
         else if (step) begin
             net_lo$d = net_lo$q + delta;
-            if ((up & (net_lo$q == all_ones)) | (down & (net_lo$q == zero))) begin
+            if ((up & lo_all_ones$q) | (down & ~lo_not_zero$q)) begin
                 net_hi$d = ~net_hi$q;
+            end
+            if (up) begin
+                lo_all_ones$d = net_lo$q == all_ones_less_one;
+                lo_not_zero$d = ~lo_all_ones$q;
+            end
+            else begin
+                lo_all_ones$d = ~lo_not_zero$q;
+                lo_not_zero$d = net_lo$q != one;
             end
         end
         if (reset) begin
             net_lo$d = zero;
             net_hi$d = 1'b0;
+            lo_all_ones$d = 1'b0;
+            lo_not_zero$d = 1'b0;
             count_reg$d = zero;
             sat_reg$d = 1'b0;
             strobe_reg$d = 1'b0;
@@ -9542,6 +9581,44 @@ module encspeed_ecc_wb$ecc$core$pc$count_reg(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$pc$count_reg
+
+
+module encspeed_ecc_wb$ecc$core$pc$lo_all_ones(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$pc$lo_all_ones
+
+
+module encspeed_ecc_wb$ecc$core$pc$lo_not_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$pc$lo_not_zero
 
 
 module encspeed_ecc_wb$ecc$core$pc$net_hi(d,q,clock);
@@ -9632,7 +9709,6 @@ module encspeed_ecc_wb$ecc$core$pc$timer(clock,reset,cfg_dt,tick);
     localparam  zero = 24'h0;
     localparam  one = 24'h1;
     localparam  two = 24'h2;
-    localparam  above_one = 24'hfffffe;
     
     // Stub signals
     reg  [23:0] plus_two_reg$d;
@@ -9644,7 +9720,7 @@ module encspeed_ecc_wb$ecc$core$pc$timer(clock,reset,cfg_dt,tick);
     
     // Local signals
     reg  [23:0] plus_two;
-    reg  dt_at_most_one;
+    reg  [23:0] compared;
     
     // Sub module instances
     encspeed_ecc_wb$ecc$core$pc$timer$plus_two_reg plus_two_reg(
@@ -9665,13 +9741,13 @@ module encspeed_ecc_wb$ecc$core$pc$timer(clock,reset,cfg_dt,tick);
         plus_two_reg$d = plus_two_reg$q;
         due$d = due$q;
         plus_two = plus_two_reg$q ^ two;
-        dt_at_most_one = (cfg_dt & above_one) == zero;
         plus_two_reg$d = (plus_two + one) ^ two;
-        due$d = plus_two >= cfg_dt;
+        compared = plus_two;
         if (due$q | reset) begin
             plus_two_reg$d = zero;
-            due$d = dt_at_most_one;
+            compared = one;
         end
+        due$d = compared >= cfg_dt;
         tick = due$q;
     end
     
@@ -9783,6 +9859,9 @@ module encspeed_ecc_wb$ecc$core$startup(clock,reset,cfg_filter,front_reset);
     reg  done$d;
     wire  done$q;
     reg  done$clock;
+    reg  counting$d;
+    wire  counting$q;
+    reg  counting$clock;
     
     // Local signals
     reg  hold;
@@ -9809,18 +9888,26 @@ module encspeed_ecc_wb$ecc$core$startup(clock,reset,cfg_filter,front_reset);
         .q(done$q),
         .clock(done$clock)
     );
+    encspeed_ecc_wb$ecc$core$startup$counting counting(
+        .d(counting$d),
+        .q(counting$q),
+        .clock(counting$clock)
+    );
     
     // Update code
     always @(*) begin
         sync_edges$clock = clock;
         settle_edges$clock = clock;
         done$clock = clock;
+        counting$clock = clock;
         released$clock = clock;
         sync_edges$d = sync_edges$q;
         settle_edges$d = settle_edges$q;
         done$d = done$q;
+        counting$d = counting$q;
         released$d = released$q;
-        reached = (settle_edges$q >= cfg_filter) & (settle_edges$q != zero);
+        reached = (settle_edges$q >= cfg_filter) & counting$q;
+        counting$d = sync_edges$q == two;
         if (sync_edges$q != two) begin
             sync_edges$d = sync_edges$q + sync_one;
         end
@@ -9828,20 +9915,40 @@ module encspeed_ecc_wb$ecc$core$startup(clock,reset,cfg_filter,front_reset);
             settle_edges$d = settle_edges$q + one;
         end
         done$d = done$q;
-        if ((sync_edges$q == two) & reached) begin
+        if (reached) begin
             done$d = 1'b1;
         end
         if (reset) begin
             done$d = 1'b0;
+            counting$d = 1'b0;
             sync_edges$d = sync_zero;
             settle_edges$d = zero;
         end
-        hold = ~done$q & ((sync_edges$q != two) | ~reached);
+        hold = ~done$q & ~reached;
         released$d = ~(reset | hold);
         front_reset = reset | ~released$q;
     end
     
 endmodule // encspeed_ecc_wb$ecc$core$startup
+
+
+module encspeed_ecc_wb$ecc$core$startup$counting(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$startup$counting
 
 
 module encspeed_ecc_wb$ecc$core$startup$done(d,q,clock);

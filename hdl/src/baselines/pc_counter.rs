@@ -13,7 +13,12 @@
 //!   of a tick edge starts the next window (`golden::ideal::fixed_time`'s convention). A
 //!   window is at most 2^N − 1 edges, so f − b fits N + 1 bits of two's complement: one
 //!   up/down counter `net_lo` (N bits, one adder of ±1) and its top bit `net_hi`, which
-//!   toggles on the carry (an up step from all ones) or the borrow (a down step from 0);
+//!   toggles on the carry (an up step from all ones) or the borrow (a down step from 0).
+//!   Those two tests are flags registered with `net_lo` (`lo_all_ones`, and `lo_not_zero`
+//!   stored inverted so that power-up and reset, net_lo = 0, are the flags' zero values),
+//!   set from comparisons on the registers a step earlier, as the position counter does:
+//!   the decoder's step is one logic level from `net_hi`'s enable (the N-bit comparisons
+//!   behind the step were the core's critical path on HX8K on every seed tried);
 //! - on a tick: `count` ← f − b clamped to N-bit two's complement [−2^(N−1), 2^(N−1) − 1]
 //!   (`saturated` tells), `strobe` ← 1 for one cycle. The value fits when `net_hi` equals
 //!   bit N − 1 of `net_lo`, else it is clamped towards its sign: the clamp needs no
@@ -57,6 +62,10 @@ pub struct PcCounter<const N: usize> {
     net_lo: DFF<Bits<N>>,
     /// f − b, bit N (the sign of the N + 1-bit value).
     net_hi: DFF<Bit>,
+    /// `net_lo` is all ones: an up step carries into `net_hi`.
+    lo_all_ones: DFF<Bit>,
+    /// `net_lo` is not 0 (stored inverted): a down step borrows from `net_hi` when clear.
+    lo_not_zero: DFF<Bit>,
     count_reg: DFF<Bits<N>>,
     sat_reg: DFF<Bit>,
     strobe_reg: DFF<Bit>,
@@ -72,6 +81,8 @@ pub struct PcCounter<const N: usize> {
     /// The sign bit, and the most negative count (−2^(N−1)) a saturated window publishes.
     msb: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
+    /// 2^N − 2: after an up step from it, `net_lo` is all ones.
+    all_ones_less_one: Constant<Bits<N>>,
     max_pos: Constant<Bits<N>>,
 }
 
@@ -91,6 +102,8 @@ impl<const N: usize> Default for PcCounter<N> {
             timer: Default::default(),
             net_lo: Default::default(),
             net_hi: Default::default(),
+            lo_all_ones: Default::default(),
+            lo_not_zero: Default::default(),
             count_reg: Default::default(),
             sat_reg: Default::default(),
             strobe_reg: Default::default(),
@@ -103,6 +116,7 @@ impl<const N: usize> Default for PcCounter<N> {
             all_ones: Constant::new(((1u64 << N) - 1).into()),
             msb: Constant::new((1u64 << (N - 1)).into()),
             one: Constant::new(1.into()),
+            all_ones_less_one: Constant::new(((1u64 << N) - 2).into()),
             max_pos: Constant::new(((1u64 << (N - 1)) - 1).into()),
         }
     }
@@ -111,7 +125,17 @@ impl<const N: usize> Default for PcCounter<N> {
 impl<const N: usize> Logic for PcCounter<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, net_lo, net_hi, count_reg, sat_reg, strobe_reg);
+        dff_setup!(
+            self,
+            clock,
+            net_lo,
+            net_hi,
+            lo_all_ones,
+            lo_not_zero,
+            count_reg,
+            sat_reg,
+            strobe_reg
+        );
         self.timer.clock.next = self.clock.val();
         self.timer.reset.next = self.reset.val();
         self.timer.cfg_dt.next = self.cfg_dt.val();
@@ -139,28 +163,44 @@ impl<const N: usize> Logic for PcCounter<N> {
             }
             self.net_lo.d.next = self.zero.val();
             self.net_hi.d.next = false;
+            self.lo_all_ones.d.next = false;
+            self.lo_not_zero.d.next = false;
             if self.up.val() {
                 self.net_lo.d.next = self.one.val();
+                self.lo_not_zero.d.next = true;
             }
             if self.down.val() {
                 self.net_lo.d.next = self.all_ones.val();
                 self.net_hi.d.next = true;
+                self.lo_all_ones.d.next = true;
+                self.lo_not_zero.d.next = true;
             }
         } else if self.step.val() {
             self.net_lo.d.next = self.net_lo.q.val() + self.delta.val();
-            // The carry out of all ones, or the borrow from 0, flips bit N. (Read from the
-            // adder's carry out instead, the wrap sat behind the whole carry chain and two
-            // more LUTs: 73-89 MHz on HX8K against 97-100 with these comparisons, which
-            // depend on registers only.)
-            if (self.up.val() & (self.net_lo.q.val() == self.all_ones.val()))
-                | (self.down.val() & (self.net_lo.q.val() == self.zero.val()))
+            // The carry out of all ones, or the borrow from 0, flips bit N. The flags of the
+            // new `net_lo` come from comparisons on the registers: after an up step it is
+            // all ones when it was 2^N − 2 and not 0 unless it was all ones; after a down
+            // step it is all ones when it was 0 and 0 when it was 1. (Read from the adder's
+            // carry out, the wrap sat behind the whole carry chain and two more LUTs: 73-89
+            // MHz on HX8K; compared in the step's cycle, five LUT levels behind the step.)
+            if (self.up.val() & self.lo_all_ones.q.val())
+                | (self.down.val() & !self.lo_not_zero.q.val())
             {
                 self.net_hi.d.next = !self.net_hi.q.val();
+            }
+            if self.up.val() {
+                self.lo_all_ones.d.next = self.net_lo.q.val() == self.all_ones_less_one.val();
+                self.lo_not_zero.d.next = !self.lo_all_ones.q.val();
+            } else {
+                self.lo_all_ones.d.next = !self.lo_not_zero.q.val();
+                self.lo_not_zero.d.next = self.net_lo.q.val() != self.one.val();
             }
         }
         if self.reset.val() {
             self.net_lo.d.next = self.zero.val();
             self.net_hi.d.next = false;
+            self.lo_all_ones.d.next = false;
+            self.lo_not_zero.d.next = false;
             self.count_reg.d.next = self.zero.val();
             self.sat_reg.d.next = false;
             self.strobe_reg.d.next = false;

@@ -11,8 +11,12 @@
 //! same cycle would make it (the core feeds the dt that its dt register takes at the same
 //! edge, so its windows are unchanged).
 //!
-//! For the new p: after a tick or reset p = 0, and 0 ≥ max(dt, 1) − 1 is dt ≤ 1 (a test of
-//! the bits, no chain); otherwise p + 1 ≥ max(dt, 1) − 1 is p + 2 ≥ dt (dt = 0 included).
+//! For the new p: after a tick or reset p = 0, and 0 ≥ max(dt, 1) − 1 is dt ≤ 1, that is
+//! 1 ≥ dt; otherwise p + 1 ≥ max(dt, 1) − 1 is p + 2 ≥ dt (dt = 0 included). So `due` is
+//! one comparison x ≥ dt whose left side x is 1 or p + 2: the choice is made on the
+//! operand, one LUT in front of the carry chain, and the chain's carry out is `due`'s input
+//! (with a test of dt's bits and a multiplexer after the chain instead, three LUT levels and
+//! a long route to `due` made the core's critical path on HX8K).
 //! The register keeps p + 2 mod 2^N with bit 1 inverted, so that its power-up value 0 is
 //! p = 0: the comparison is one carry chain from it. p + 2 wraps only at p = 2^N − 2, the
 //! largest max(dt, 1) − 1, where `due` is already set and the result is not used.
@@ -43,13 +47,11 @@ pub struct WindowTimer<const N: usize> {
     due: DFF<Bit>,
     /// p + 2 mod 2^N.
     plus_two: Signal<Local, Bits<N>>,
-    /// dt ≤ 1: a window end on every edge.
-    dt_at_most_one: Signal<Local, Bit>,
+    /// The left side of `due`'s comparison: 1 after a tick or reset, else p + 2.
+    compared: Signal<Local, Bits<N>>,
     zero: Constant<Bits<N>>,
     one: Constant<Bits<N>>,
     two: Constant<Bits<N>>,
-    /// Every bit but bit 0.
-    above_one: Constant<Bits<N>>,
 }
 
 impl<const N: usize> Default for WindowTimer<N> {
@@ -63,11 +65,10 @@ impl<const N: usize> Default for WindowTimer<N> {
             plus_two_reg: Default::default(),
             due: Default::default(),
             plus_two: Default::default(),
-            dt_at_most_one: Default::default(),
+            compared: Default::default(),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
             two: Constant::new(2.into()),
-            above_one: Constant::new((((1u64 << N) - 1) & !1).into()),
         }
     }
 }
@@ -77,14 +78,14 @@ impl<const N: usize> Logic for WindowTimer<N> {
     fn update(&mut self) {
         dff_setup!(self, clock, plus_two_reg, due);
         self.plus_two.next = self.plus_two_reg.q.val() ^ self.two.val();
-        self.dt_at_most_one.next = (self.cfg_dt.val() & self.above_one.val()) == self.zero.val();
         // Not a tick: p + 1 is the new phase, its p + 2 is this cycle's p + 3.
         self.plus_two_reg.d.next = (self.plus_two.val() + self.one.val()) ^ self.two.val();
-        self.due.d.next = self.plus_two.val() >= self.cfg_dt.val();
+        self.compared.next = self.plus_two.val();
         if self.due.q.val() | self.reset.val() {
             self.plus_two_reg.d.next = self.zero.val();
-            self.due.d.next = self.dt_at_most_one.val();
+            self.compared.next = self.one.val();
         }
+        self.due.d.next = self.compared.val() >= self.cfg_dt.val();
         // The counters' own resets win over the tick: no reset in front of their enables.
         self.tick.next = self.due.q.val();
     }

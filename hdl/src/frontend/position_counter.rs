@@ -19,7 +19,9 @@
 //!    position's incrementer: the position register is one adder away from itself. The
 //!    ±1 itself is two carry chains of half the width side by side: the low ⌈C/2⌉ bits,
 //!    and the high bits plus the carry or minus the borrow of the low half, which are two
-//!    more registered flags (low half all ones, low half 0) set the same way. A 32-bit
+//!    more registered flags (low half all ones, low half 0) set the same way and added as
+//!    the high half's second operand (selecting high + 1 or high − 1 after the chain put
+//!    one more LUT level between the chain and the position's multiplexer). A 32-bit
 //!    chain from a register that fans out across the core was the slowest path of the
 //!    core on the iCE40. The positions after a forward and after a backward step, and
 //!    their flags, are formed from registers only; the decoder's step and direction then
@@ -146,6 +148,10 @@ pub struct PositionCounter<const C: usize, const G: usize> {
     /// position + 1 and position − 1, each from two carry chains of half the width.
     plus_one: Signal<Local, Bits<C>>,
     minus_one: Signal<Local, Bits<C>>,
+    /// 1 when the low half is all ones (the high half's carry in), else 0.
+    carry: Signal<Local, Bits<C>>,
+    /// 1 when the low half is 0 (the high half's borrow in), else 0.
+    borrow: Signal<Local, Bits<C>>,
     /// The low and high halves of the position (the other half's bits 0).
     low: Signal<Local, Bits<C>>,
     high: Signal<Local, Bits<C>>,
@@ -243,6 +249,8 @@ impl<const C: usize, const G: usize> Default for PositionCounter<C, G> {
             down_low_not_zero: Default::default(),
             plus_one: Default::default(),
             minus_one: Default::default(),
+            carry: Default::default(),
+            borrow: Default::default(),
             low: Default::default(),
             high: Default::default(),
             limit_low_all_ones: Default::default(),
@@ -312,17 +320,21 @@ impl<const C: usize, const G: usize> Logic for PositionCounter<C, G> {
         // long and the two run side by side.
         self.low.next = self.position_reg.q.val() & self.low_mask.val();
         self.high.next = self.position_reg.q.val() >> self.low_width.val();
-        self.plus_one.next = ((self.low.val() + self.pos_one.val()) & self.low_mask.val())
-            | (self.high.val() << self.low_width.val());
+        // The low half wraps by itself (all ones + 1 is 0 and 0 − 1 is all ones in ⌈C/2⌉
+        // bits); the registered carry and borrow are the high half's second operand, a
+        // flip-flop straight into its chain, so no multiplexer follows either chain.
+        self.carry.next = self.pos_zero.val();
         if self.low_all_ones.q.val() {
-            self.plus_one.next = (self.high.val() + self.pos_one.val()) << self.low_width.val();
+            self.carry.next = self.pos_one.val();
         }
-        self.minus_one.next = ((self.low.val() - self.pos_one.val()) & self.low_mask.val())
-            | (self.high.val() << self.low_width.val());
+        self.borrow.next = self.pos_zero.val();
         if !self.low_not_zero.q.val() {
-            self.minus_one.next = ((self.high.val() - self.pos_one.val()) << self.low_width.val())
-                | self.low_mask.val();
+            self.borrow.next = self.pos_one.val();
         }
+        self.plus_one.next = ((self.low.val() + self.pos_one.val()) & self.low_mask.val())
+            | ((self.high.val() + self.carry.val()) << self.low_width.val());
+        self.minus_one.next = ((self.low.val() - self.pos_one.val()) & self.low_mask.val())
+            | ((self.high.val() - self.borrow.val()) << self.low_width.val());
         self.limit_low_all_ones.next =
             (self.limit.val() & self.low_mask.val()) == self.low_mask.val();
         self.limit_low_zero.next = (self.limit.val() & self.low_mask.val()) == self.pos_zero.val();

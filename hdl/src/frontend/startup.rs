@@ -12,15 +12,20 @@
 //! takes is then a filtered sample of the real channels (the golden rule is in
 //! `golden::top::core`).
 //!
-//! The rule's "count ≥ max(L, 1)" is tested as "count ≥ L and count ≠ 0": two tests side
-//! by side, where the zero test of L in front of the comparison was in series with it (the
-//! critical path of `encspeed_wb` on one seed, from the core's registered L through the
-//! 16-bit comparison to `done`'s enable).
+//! The rule's "count ≥ max(L, 1)" is tested as "count ≥ L and count ≠ 0", and "count ≠ 0"
+//! together with "the synchronisers have passed" is a register, `counting`: the settle count
+//! leaves 0 at the first edge after the synchroniser count reaches 2 and only a reset brings
+//! either back, so `counting` ← ¬reset ∧ (synchroniser count = 2) is exactly their
+//! conjunction one edge later. The hold's register then takes one LUT after the 16-bit
+//! comparison's carry chain, with `reset`, `done` and `counting` (a zero test of L in front
+//! of the comparison, and then the 16-bit zero test and the synchroniser test after it, were
+//! the critical path of `encspeed_wb` on two seeds).
 //!
 //! Registers: a 2-bit count of the synchroniser edges (saturating at 2), a 16-bit count of
 //! the edges after them (saturating at 2^16 − 1, the longest filter), a `done` flag set
 //! when the hold rule first ends, so that raising `cfg_filter` later does not bring the hold
-//! back (it would reset the decoder and the position counter), and `released`.
+//! back (it would reset the decoder and the position counter), `counting`, and `released`
+//! (the same value as `done`, kept apart for its name: synthesis merges the two).
 
 use golden::params::FILTER_BITS;
 use rust_hdl::prelude::*;
@@ -45,6 +50,8 @@ pub struct Startup {
     sync_edges: DFF<Bits<2>>,
     settle_edges: DFF<Bits<FB>>,
     done: DFF<Bit>,
+    /// The synchronisers have passed and the settle count is not 0.
+    counting: DFF<Bit>,
     /// The edge count has reached max(L, 1).
     reached: Signal<Local, Bit>,
     two: Constant<Bits<2>>,
@@ -67,6 +74,7 @@ impl Default for Startup {
             sync_edges: Default::default(),
             settle_edges: Default::default(),
             done: Default::default(),
+            counting: Default::default(),
             reached: Default::default(),
             two: Constant::new(2.into()),
             sync_one: Constant::new(1.into()),
@@ -81,11 +89,20 @@ impl Default for Startup {
 impl Logic for Startup {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, sync_edges, settle_edges, done, released);
-        // count ≥ max(L, 1) (a filter of 0 or 1 cycles delays a level by one edge), as two
-        // tests side by side.
-        self.reached.next = (self.settle_edges.q.val() >= self.cfg_filter.val())
-            & (self.settle_edges.q.val() != self.zero.val());
+        dff_setup!(
+            self,
+            clock,
+            sync_edges,
+            settle_edges,
+            done,
+            counting,
+            released
+        );
+        // count ≥ max(L, 1) (a filter of 0 or 1 cycles delays a level by one edge), as
+        // count ≥ L beside the registered count ≠ 0 (which implies the synchronisers passed).
+        self.reached.next =
+            (self.settle_edges.q.val() >= self.cfg_filter.val()) & self.counting.q.val();
+        self.counting.d.next = self.sync_edges.q.val() == self.two.val();
         if self.sync_edges.q.val() != self.two.val() {
             self.sync_edges.d.next = self.sync_edges.q.val() + self.sync_one.val();
         } else if self.settle_edges.q.val() != self.max.val() {
@@ -93,16 +110,16 @@ impl Logic for Startup {
         }
         // The hold ends once for all: raising cfg_filter later does not bring it back.
         self.done.d.next = self.done.q.val();
-        if (self.sync_edges.q.val() == self.two.val()) & self.reached.val() {
+        if self.reached.val() {
             self.done.d.next = true;
         }
         if self.reset.val() {
             self.done.d.next = false;
+            self.counting.d.next = false;
             self.sync_edges.d.next = self.sync_zero.val();
             self.settle_edges.d.next = self.zero.val();
         }
-        self.hold.next = !self.done.q.val()
-            & ((self.sync_edges.q.val() != self.two.val()) | !self.reached.val());
+        self.hold.next = !self.done.q.val() & !self.reached.val();
         // Registered: the filter-length comparison does not reach the resets of the decoder
         // and the counter in the same cycle. Combined with `reset` here rather than in the
         // core: logic of the core that read the hold and the value it drives `reset` with
