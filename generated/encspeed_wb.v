@@ -439,30 +439,16 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     reg  [23:0] calc$ndt;
     reg  calc$negative;
     reg  [1:0] calc$mode_shift;
+    reg  [31:0] calc$position;
     wire  [40:0] calc$speed_n1;
     wire  [40:0] calc$speed_n2;
     wire  [40:0] calc$speed_n3;
+    wire  [31:0] calc$speed_position;
+    wire  [23:0] calc$speed_nep;
+    wire  [23:0] calc$speed_ndt;
     wire  calc$valid;
+    wire  calc$have_speeds;
     wire  calc$busy;
-    reg  tag$clock;
-    reg  tag$reset;
-    reg  tag$start;
-    reg  [31:0] tag$position;
-    reg  [23:0] tag$nep;
-    reg  [23:0] tag$ndt;
-    wire  [31:0] tag$tag_position;
-    wire  [23:0] tag$tag_nep;
-    wire  [23:0] tag$tag_ndt;
-    wire  tag$valid;
-    reg  [31:0] tag_position$d;
-    wire  [31:0] tag_position$q;
-    reg  tag_position$clock;
-    reg  [23:0] tag_nep$d;
-    wire  [23:0] tag_nep$q;
-    reg  tag_nep$clock;
-    reg  [23:0] tag_ndt$d;
-    wire  [23:0] tag_ndt$q;
-    reg  tag_ndt$clock;
     reg  [31:0] window_last$d;
     wire  [31:0] window_last$q;
     reg  window_last$clock;
@@ -472,17 +458,6 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
     reg  [31:0] position_before$d;
     wire  [31:0] position_before$q;
     reg  position_before$clock;
-    reg  hold$clock;
-    reg  hold$clear;
-    reg  hold$load;
-    reg  [40:0] hold$n1_in;
-    reg  [40:0] hold$n2_in;
-    reg  [40:0] hold$n3_in;
-    wire  [40:0] hold$n1;
-    wire  [40:0] hold$n2;
-    wire  [40:0] hold$n3;
-    wire  hold$strobe;
-    wire  hold$have_speed;
     reg  pc$clock;
     reg  pc$reset;
     reg  pc$step;
@@ -704,38 +679,16 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         .ndt(calc$ndt),
         .negative(calc$negative),
         .mode_shift(calc$mode_shift),
+        .position(calc$position),
         .speed_n1(calc$speed_n1),
         .speed_n2(calc$speed_n2),
         .speed_n3(calc$speed_n3),
+        .speed_position(calc$speed_position),
+        .speed_nep(calc$speed_nep),
+        .speed_ndt(calc$speed_ndt),
         .valid(calc$valid),
+        .have_speeds(calc$have_speeds),
         .busy(calc$busy)
-    );
-    encspeed_wb$core$tag tag(
-        .clock(tag$clock),
-        .reset(tag$reset),
-        .start(tag$start),
-        .position(tag$position),
-        .nep(tag$nep),
-        .ndt(tag$ndt),
-        .tag_position(tag$tag_position),
-        .tag_nep(tag$tag_nep),
-        .tag_ndt(tag$tag_ndt),
-        .valid(tag$valid)
-    );
-    encspeed_wb$core$tag_position tag_position(
-        .d(tag_position$d),
-        .q(tag_position$q),
-        .clock(tag_position$clock)
-    );
-    encspeed_wb$core$tag_nep tag_nep(
-        .d(tag_nep$d),
-        .q(tag_nep$q),
-        .clock(tag_nep$clock)
-    );
-    encspeed_wb$core$tag_ndt tag_ndt(
-        .d(tag_ndt$d),
-        .q(tag_ndt$q),
-        .clock(tag_ndt$clock)
     );
     encspeed_wb$core$window_last window_last(
         .d(window_last$d),
@@ -751,19 +704,6 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         .d(position_before$d),
         .q(position_before$q),
         .clock(position_before$clock)
-    );
-    encspeed_wb$core$hold hold(
-        .clock(hold$clock),
-        .clear(hold$clear),
-        .load(hold$load),
-        .n1_in(hold$n1_in),
-        .n2_in(hold$n2_in),
-        .n3_in(hold$n3_in),
-        .n1(hold$n1),
-        .n2(hold$n2),
-        .n3(hold$n3),
-        .strobe(hold$strobe),
-        .have_speed(hold$have_speed)
     );
     encspeed_wb$core$pc pc(
         .clock(pc$clock),
@@ -895,8 +835,6 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         timebase$clock = clock;
         table1$clock = clock;
         calc$clock = clock;
-        tag$clock = clock;
-        hold$clock = clock;
         pc$clock = clock;
         et$clock = clock;
         mt$clock = clock;
@@ -910,9 +848,6 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         filter_reg$clock = clock;
         z_mode_reg$clock = clock;
         cfg_error_reg$clock = clock;
-        tag_position$clock = clock;
-        tag_nep$clock = clock;
-        tag_ndt$clock = clock;
         window_last$clock = clock;
         restart_pos$clock = clock;
         position_before$clock = clock;
@@ -924,9 +859,6 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         filter_reg$d = filter_reg$q;
         z_mode_reg$d = z_mode_reg$q;
         cfg_error_reg$d = cfg_error_reg$q;
-        tag_position$d = tag_position$q;
-        tag_nep$d = tag_nep$q;
-        tag_ndt$d = tag_ndt$q;
         window_last$d = window_last$q;
         restart_pos$d = restart_pos$q;
         position_before$d = position_before$q;
@@ -1020,8 +952,6 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         calc$ndt = table1$ndt;
         calc$negative = ~last_dir$q;
         calc$mode_shift = shift;
-        tag$reset = engine_reset;
-        tag$start = table1$update & table1$primed;
         position_before$d = counter$position;
         restart_now = restart_pos$q;
         if (table1$restarted) begin
@@ -1037,27 +967,10 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
             window_last$d = 32'h0;
             restart_pos$d = 32'h0;
         end
-        tag$position = window_now;
+        calc$position = window_now;
         if (table1$nep == n_one) begin
-            tag$position = restart_now;
+            calc$position = restart_now;
         end
-        tag$nep = table1$nep;
-        tag$ndt = table1$ndt;
-        if (tag$valid) begin
-            tag_position$d = tag$tag_position;
-            tag_nep$d = tag$tag_nep;
-            tag_ndt$d = tag$tag_ndt;
-        end
-        if (engine_reset) begin
-            tag_position$d = 32'h0;
-            tag_nep$d = n_zero;
-            tag_ndt$d = n_zero;
-        end
-        hold$clear = engine_reset;
-        hold$load = calc$valid;
-        hold$n1_in = calc$speed_n1;
-        hold$n2_in = calc$speed_n2;
-        hold$n3_in = calc$speed_n3;
         pc$reset = rst;
         et$reset = rst;
         mt$reset = rst;
@@ -1097,16 +1010,16 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         nep = table1$nep;
         ndt = table1$ndt;
         update = table1$update;
-        speed_n1 = hold$n1;
-        speed_n2 = hold$n2;
-        speed_n3 = hold$n3;
-        speed_strobe = hold$strobe;
+        speed_n1 = calc$speed_n1;
+        speed_n2 = calc$speed_n2;
+        speed_n3 = calc$speed_n3;
+        speed_strobe = calc$valid;
         speed_pc = baseline$speed_pc;
         speed_et = baseline$speed_et;
         speed_mt = baseline$speed_mt;
         baseline_strobe = baseline$valid;
         stalled = timebase$stalled;
-        valid = hold$have_speed & ~timebase$stalled & ~cfg_error_reg$q;
+        valid = calc$have_speeds & ~timebase$stalled & ~cfg_error_reg$q;
         fault_illegal = faults$fault_illegal;
         fault_overspeed = faults$fault_overspeed;
         fault_revolution = faults$fault_revolution;
@@ -1114,9 +1027,9 @@ module encspeed_wb$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fil
         glitch_count = faults$glitch_count;
         illegal_count = decoder$illegal_count;
         rev_error_count = counter$rev_error_count;
-        speed_position = tag_position$q;
-        speed_nep = tag_nep$q;
-        speed_ndt = tag_ndt$q;
+        speed_position = calc$speed_position;
+        speed_nep = calc$speed_nep;
+        speed_ndt = calc$speed_ndt;
         mt_strobe = mt$strobe;
         mt_m = mt$m;
         mt_t = mt$t;
@@ -1256,9 +1169,6 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     reg  [40:0] dq$d;
     wire  [40:0] dq$q;
     reg  dq$clock;
-    reg  upper_all_ones$d;
-    wire  upper_all_ones$q;
-    reg  upper_all_ones$clock;
     reg  [40:0] stage_et$d;
     wire  [40:0] stage_et$q;
     reg  stage_et$clock;
@@ -1297,6 +1207,9 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
     reg  sel_sat$d;
     wire  sel_sat$q;
     reg  sel_sat$clock;
+    reg  round_enable$d;
+    wire  round_enable$q;
+    reg  round_enable$clock;
     reg  round_add$clock;
     reg  [40:0] round_add$a;
     reg  [40:0] round_add$b;
@@ -1477,11 +1390,6 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         .q(dq$q),
         .clock(dq$clock)
     );
-    encspeed_wb$core$baseline$upper_all_ones upper_all_ones(
-        .d(upper_all_ones$d),
-        .q(upper_all_ones$q),
-        .clock(upper_all_ones$clock)
-    );
     encspeed_wb$core$baseline$stage_et stage_et(
         .d(stage_et$d),
         .q(stage_et$q),
@@ -1544,6 +1452,11 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         .q(sel_sat$q),
         .clock(sel_sat$clock)
     );
+    encspeed_wb$core$baseline$round_enable round_enable(
+        .d(round_enable$d),
+        .q(round_enable$q),
+        .clock(round_enable$clock)
+    );
     encspeed_wb$core$baseline$round_add round_add(
         .clock(round_add$clock),
         .a(round_add$a),
@@ -1584,7 +1497,6 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         second$clock = clock;
         den$clock = clock;
         dq$clock = clock;
-        upper_all_ones$clock = clock;
         stage_et$clock = clock;
         et_rounding$clock = clock;
         out_pc$clock = clock;
@@ -1594,6 +1506,7 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         sel_neg$clock = clock;
         sel_zero$clock = clock;
         sel_sat$clock = clock;
+        round_enable$clock = clock;
         req_pc$d = req_pc$q;
         req_period$d = req_period$q;
         req_et_neg$d = req_et_neg$q;
@@ -1624,7 +1537,6 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         second$d = second$q;
         den$d = den$q;
         dq$d = dq$q;
-        upper_all_ones$d = upper_all_ones$q;
         stage_et$d = stage_et$q;
         et_rounding$d = et_rounding$q;
         out_pc$d = out_pc$q;
@@ -1634,6 +1546,7 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
         sel_neg$d = sel_neg$q;
         sel_zero$d = sel_zero$q;
         sel_sat$d = sel_sat$q;
+        round_enable$d = round_enable$q;
         take = (state$q == st_idle) & pending$q;
         dt_eff = req_dt$q;
         if (req_dt$q == n_zero) begin
@@ -1868,15 +1781,16 @@ module encspeed_wb$core$baseline(clock,reset,start,pc_count,et_period,et_negativ
             sel_sat$d = w_mt_sat$q;
         end
         half = dq$q >> sh_one;
-        upper_all_ones$d = (dq$q & s_low_bits) == s_low_bits;
-        round_bit = ((dq$q & s_one) != s_zero) & ~upper_all_ones$q;
+        round_enable$d = ((dq$q & s_low_bits) != s_low_bits) & ~w_et_zero$q;
+        if (phase$q) begin
+            round_enable$d = ((dq$q & s_low_bits) != s_low_bits) & ~w_mt_zero$q & ~w_mt_sat$q;
+        end
+        round_bit = ((dq$q & s_one) != s_zero) & round_enable$q;
         if (sel_sat$q) begin
             half = s_max;
-            round_bit = 1'b0;
         end
         if (sel_zero$q) begin
             half = s_zero;
-            round_bit = 1'b0;
         end
         addend = half;
         if (sel_neg$q) begin
@@ -2871,6 +2785,25 @@ module encspeed_wb$core$baseline$round_add$low(d,q,clock);
 endmodule // encspeed_wb$core$baseline$round_add$low
 
 
+module encspeed_wb$core$baseline$round_enable(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$baseline$round_enable
+
+
 module encspeed_wb$core$baseline$second(d,q,clock);
     
     // Module arguments
@@ -2983,25 +2916,6 @@ module encspeed_wb$core$baseline$state(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$baseline$state
-
-
-module encspeed_wb$core$baseline$upper_all_ones(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$baseline$upper_all_ones
 
 
 module encspeed_wb$core$baseline$valid_reg(d,q,clock);
@@ -3194,7 +3108,7 @@ module encspeed_wb$core$baseline$w_t(d,q,clock);
 endmodule // encspeed_wb$core$baseline$w_t
 
 
-module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed_n1,speed_n2,speed_n3,valid,busy);
+module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position,speed_n1,speed_n2,speed_n3,speed_position,speed_nep,speed_ndt,valid,have_speeds,busy);
     
     // Module arguments
     input wire  clock;
@@ -3204,14 +3118,20 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
     input wire  [23:0] ndt;
     input wire  negative;
     input wire  [1:0] mode_shift;
+    input wire  [31:0] position;
     output reg  [40:0] speed_n1;
     output reg  [40:0] speed_n2;
     output reg  [40:0] speed_n3;
+    output reg  [31:0] speed_position;
+    output reg  [23:0] speed_nep;
+    output reg  [23:0] speed_ndt;
     output reg  valid;
+    output reg  have_speeds;
     output reg  busy;
     
     // Constant declarations
     localparam  n_zero = 24'h0;
+    localparam  c_zero = 32'h0;
     localparam  p_zero = 49'h0;
     localparam  p_one = 49'h1;
     localparam  p_msb = 49'h1000000000000;
@@ -3243,6 +3163,9 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
     localparam  ph_three = 2'b11;
     
     // Stub signals
+    reg  [31:0] req_position$d;
+    wire  [31:0] req_position$q;
+    reg  req_position$clock;
     reg  [23:0] req_nep$d;
     wire  [23:0] req_nep$q;
     reg  req_nep$clock;
@@ -3258,6 +3181,9 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
     reg  pending$d;
     wire  pending$q;
     reg  pending$clock;
+    reg  [31:0] w_position$d;
+    wire  [31:0] w_position$q;
+    reg  w_position$clock;
     reg  [23:0] w_nep$d;
     wire  [23:0] w_nep$q;
     reg  w_nep$clock;
@@ -3291,6 +3217,9 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
     reg  second$d;
     wire  second$q;
     reg  second$clock;
+    reg  publish$d;
+    wire  publish$q;
+    reg  publish$clock;
     reg  mul_on$d;
     wire  mul_on$q;
     reg  mul_on$clock;
@@ -3333,9 +3262,21 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
     reg  [40:0] out_n3$d;
     wire  [40:0] out_n3$q;
     reg  out_n3$clock;
+    reg  [31:0] out_position$d;
+    wire  [31:0] out_position$q;
+    reg  out_position$clock;
+    reg  [23:0] out_nep$d;
+    wire  [23:0] out_nep$q;
+    reg  out_nep$clock;
+    reg  [23:0] out_ndt$d;
+    wire  [23:0] out_ndt$q;
+    reg  out_ndt$clock;
     reg  valid_reg$d;
     wire  valid_reg$q;
     reg  valid_reg$clock;
+    reg  have_reg$d;
+    wire  have_reg$q;
+    reg  have_reg$clock;
     reg  [48:0] nep_less_one$d;
     wire  [48:0] nep_less_one$q;
     reg  nep_less_one$clock;
@@ -3392,6 +3333,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
     reg  [40:0] rounded;
     
     // Sub module instances
+    encspeed_wb$core$calc$req_position req_position(
+        .d(req_position$d),
+        .q(req_position$q),
+        .clock(req_position$clock)
+    );
     encspeed_wb$core$calc$req_nep req_nep(
         .d(req_nep$d),
         .q(req_nep$q),
@@ -3416,6 +3362,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
         .d(pending$d),
         .q(pending$q),
         .clock(pending$clock)
+    );
+    encspeed_wb$core$calc$w_position w_position(
+        .d(w_position$d),
+        .q(w_position$q),
+        .clock(w_position$clock)
     );
     encspeed_wb$core$calc$w_nep w_nep(
         .d(w_nep$d),
@@ -3471,6 +3422,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
         .d(second$d),
         .q(second$q),
         .clock(second$clock)
+    );
+    encspeed_wb$core$calc$publish publish(
+        .d(publish$d),
+        .q(publish$q),
+        .clock(publish$clock)
     );
     encspeed_wb$core$calc$mul_on mul_on(
         .d(mul_on$d),
@@ -3542,10 +3498,30 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
         .q(out_n3$q),
         .clock(out_n3$clock)
     );
+    encspeed_wb$core$calc$out_position out_position(
+        .d(out_position$d),
+        .q(out_position$q),
+        .clock(out_position$clock)
+    );
+    encspeed_wb$core$calc$out_nep out_nep(
+        .d(out_nep$d),
+        .q(out_nep$q),
+        .clock(out_nep$clock)
+    );
+    encspeed_wb$core$calc$out_ndt out_ndt(
+        .d(out_ndt$d),
+        .q(out_ndt$q),
+        .clock(out_ndt$clock)
+    );
     encspeed_wb$core$calc$valid_reg valid_reg(
         .d(valid_reg$d),
         .q(valid_reg$q),
         .clock(valid_reg$clock)
+    );
+    encspeed_wb$core$calc$have_reg have_reg(
+        .d(have_reg$d),
+        .q(have_reg$q),
+        .clock(have_reg$clock)
     );
     encspeed_wb$core$calc$nep_less_one nep_less_one(
         .d(nep_less_one$d),
@@ -3598,11 +3574,13 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
     
     // Update code
     always @(*) begin
+        req_position$clock = clock;
         req_nep$clock = clock;
         req_ndt$clock = clock;
         req_neg$clock = clock;
         req_shift$clock = clock;
         pending$clock = clock;
+        w_position$clock = clock;
         w_nep$clock = clock;
         w_ndt$clock = clock;
         w_high$clock = clock;
@@ -3614,6 +3592,7 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
         phase$clock = clock;
         count$clock = clock;
         second$clock = clock;
+        publish$clock = clock;
         mul_on$clock = clock;
         mul_last$clock = clock;
         part_rem$clock = clock;
@@ -3628,16 +3607,22 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
         out_n1$clock = clock;
         out_n2$clock = clock;
         out_n3$clock = clock;
+        out_position$clock = clock;
+        out_nep$clock = clock;
+        out_ndt$clock = clock;
         valid_reg$clock = clock;
+        have_reg$clock = clock;
         nep_less_one$clock = clock;
         ndt_plus_one$clock = clock;
         inc_r0$clock = clock;
         inc_r1$clock = clock;
+        req_position$d = req_position$q;
         req_nep$d = req_nep$q;
         req_ndt$d = req_ndt$q;
         req_neg$d = req_neg$q;
         req_shift$d = req_shift$q;
         pending$d = pending$q;
+        w_position$d = w_position$q;
         w_nep$d = w_nep$q;
         w_ndt$d = w_ndt$q;
         w_high$d = w_high$q;
@@ -3649,6 +3634,7 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
         phase$d = phase$q;
         count$d = count$q;
         second$d = second$q;
+        publish$d = publish$q;
         mul_on$d = mul_on$q;
         mul_last$d = mul_last$q;
         part_rem$d = part_rem$q;
@@ -3663,7 +3649,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
         out_n1$d = out_n1$q;
         out_n2$d = out_n2$q;
         out_n3$d = out_n3$q;
+        out_position$d = out_position$q;
+        out_nep$d = out_nep$q;
+        out_ndt$d = out_ndt$q;
         valid_reg$d = valid_reg$q;
+        have_reg$d = have_reg$q;
         nep_less_one$d = nep_less_one$q;
         ndt_plus_one$d = ndt_plus_one$q;
         inc_r0$d = inc_r0$q;
@@ -4072,6 +4062,7 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
         end
         valid_reg$d = 1'b0;
         if ((state$q == st_idle) & pending$q) begin
+            w_position$d = req_position$q;
             w_nep$d = req_nep$q;
             w_ndt$d = req_ndt$q;
             w_high$d = req_ndt$q <= (req_nep$q >> sh_one);
@@ -4136,13 +4127,23 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
             end
         end
         if ((state$q == st_finish) & second$q) begin
+            publish$d = 1'b1;
+        end
+        if (publish$q) begin
             out_n1$d = stage_n1$q;
             out_n2$d = stage_n2$q;
             out_n3$d = rounded;
+            out_position$d = w_position$q;
+            out_nep$d = w_nep$q;
+            out_ndt$d = w_ndt$q;
             valid_reg$d = 1'b1;
+            have_reg$d = 1'b1;
+            publish$d = 1'b0;
+            second$d = 1'b0;
             state$d = st_idle;
         end
         if (start) begin
+            req_position$d = position;
             req_nep$d = nep;
             req_ndt$d = ndt;
             req_neg$d = negative;
@@ -4153,16 +4154,25 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,speed
             pending$d = 1'b0;
             mul_on$d = 1'b0;
             second$d = 1'b0;
+            publish$d = 1'b0;
             state$d = st_idle;
             valid_reg$d = 1'b0;
+            have_reg$d = 1'b0;
             out_n1$d = s_zero;
             out_n2$d = s_zero;
             out_n3$d = s_zero;
+            out_position$d = c_zero;
+            out_nep$d = n_zero;
+            out_ndt$d = n_zero;
         end
         speed_n1 = out_n1$q;
         speed_n2 = out_n2$q;
         speed_n3 = out_n3$q;
+        speed_position = out_position$q;
+        speed_nep = out_nep$q;
+        speed_ndt = out_ndt$q;
         valid = valid_reg$q;
+        have_speeds = have_reg$q;
         busy = pending$q | (state$q != st_idle);
     end
     
@@ -4382,6 +4392,25 @@ module encspeed_wb$core$calc$div_sub$low(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$calc$div_sub$low
+
+
+module encspeed_wb$core$calc$have_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$have_reg
 
 
 module encspeed_wb$core$calc$inc_r0(d,q,clock);
@@ -4871,6 +4900,63 @@ module encspeed_wb$core$calc$out_n3(d,q,clock);
 endmodule // encspeed_wb$core$calc$out_n3
 
 
+module encspeed_wb$core$calc$out_ndt(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$out_ndt
+
+
+module encspeed_wb$core$calc$out_nep(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$out_nep
+
+
+module encspeed_wb$core$calc$out_position(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$out_position
+
+
 module encspeed_wb$core$calc$part_rem(d,q,clock);
     
     // Module arguments
@@ -4926,6 +5012,25 @@ module encspeed_wb$core$calc$phase(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$calc$phase
+
+
+module encspeed_wb$core$calc$publish(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$publish
 
 
 module encspeed_wb$core$calc$quo(d,q,clock);
@@ -5002,6 +5107,25 @@ module encspeed_wb$core$calc$req_nep(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$calc$req_nep
+
+
+module encspeed_wb$core$calc$req_position(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$req_position
 
 
 module encspeed_wb$core$calc$req_shift(d,q,clock);
@@ -5369,6 +5493,25 @@ module encspeed_wb$core$calc$w_nep_zero(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$calc$w_nep_zero
+
+
+module encspeed_wb$core$calc$w_position(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$w_position
 
 
 module encspeed_wb$core$calc$w_shift(d,q,clock);
@@ -7871,199 +8014,6 @@ module encspeed_wb$core$filter_z$rejected_reg(d,q,clock);
 endmodule // encspeed_wb$core$filter_z$rejected_reg
 
 
-module encspeed_wb$core$hold(clock,clear,load,n1_in,n2_in,n3_in,n1,n2,n3,strobe,have_speed);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  clear;
-    input wire  load;
-    input wire  [40:0] n1_in;
-    input wire  [40:0] n2_in;
-    input wire  [40:0] n3_in;
-    output reg  [40:0] n1;
-    output reg  [40:0] n2;
-    output reg  [40:0] n3;
-    output reg  strobe;
-    output reg  have_speed;
-    
-    // Constant declarations
-    localparam  zero = 41'h0;
-    
-    // Stub signals
-    reg  [40:0] n1_reg$d;
-    wire  [40:0] n1_reg$q;
-    reg  n1_reg$clock;
-    reg  [40:0] n2_reg$d;
-    wire  [40:0] n2_reg$q;
-    reg  n2_reg$clock;
-    reg  [40:0] n3_reg$d;
-    wire  [40:0] n3_reg$q;
-    reg  n3_reg$clock;
-    reg  strobe_reg$d;
-    wire  strobe_reg$q;
-    reg  strobe_reg$clock;
-    reg  have_reg$d;
-    wire  have_reg$q;
-    reg  have_reg$clock;
-    
-    // Sub module instances
-    encspeed_wb$core$hold$n1_reg n1_reg(
-        .d(n1_reg$d),
-        .q(n1_reg$q),
-        .clock(n1_reg$clock)
-    );
-    encspeed_wb$core$hold$n2_reg n2_reg(
-        .d(n2_reg$d),
-        .q(n2_reg$q),
-        .clock(n2_reg$clock)
-    );
-    encspeed_wb$core$hold$n3_reg n3_reg(
-        .d(n3_reg$d),
-        .q(n3_reg$q),
-        .clock(n3_reg$clock)
-    );
-    encspeed_wb$core$hold$strobe_reg strobe_reg(
-        .d(strobe_reg$d),
-        .q(strobe_reg$q),
-        .clock(strobe_reg$clock)
-    );
-    encspeed_wb$core$hold$have_reg have_reg(
-        .d(have_reg$d),
-        .q(have_reg$q),
-        .clock(have_reg$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        n1_reg$clock = clock;
-        n2_reg$clock = clock;
-        n3_reg$clock = clock;
-        strobe_reg$clock = clock;
-        have_reg$clock = clock;
-        n1_reg$d = n1_reg$q;
-        n2_reg$d = n2_reg$q;
-        n3_reg$d = n3_reg$q;
-        strobe_reg$d = strobe_reg$q;
-        have_reg$d = have_reg$q;
-        strobe_reg$d = load;
-        if (load) begin
-            n1_reg$d = n1_in;
-            n2_reg$d = n2_in;
-            n3_reg$d = n3_in;
-            have_reg$d = 1'b1;
-        end
-        if (clear) begin
-            n1_reg$d = zero;
-            n2_reg$d = zero;
-            n3_reg$d = zero;
-            strobe_reg$d = 1'b0;
-            have_reg$d = 1'b0;
-        end
-        n1 = n1_reg$q;
-        n2 = n2_reg$q;
-        n3 = n3_reg$q;
-        strobe = strobe_reg$q;
-        have_speed = have_reg$q;
-    end
-    
-endmodule // encspeed_wb$core$hold
-
-
-module encspeed_wb$core$hold$have_reg(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$hold$have_reg
-
-
-module encspeed_wb$core$hold$n1_reg(d,q,clock);
-    
-    // Module arguments
-    input wire  [40:0] d;
-    output reg  [40:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 41'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$hold$n1_reg
-
-
-module encspeed_wb$core$hold$n2_reg(d,q,clock);
-    
-    // Module arguments
-    input wire  [40:0] d;
-    output reg  [40:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 41'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$hold$n2_reg
-
-
-module encspeed_wb$core$hold$n3_reg(d,q,clock);
-    
-    // Module arguments
-    input wire  [40:0] d;
-    output reg  [40:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 41'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$hold$n3_reg
-
-
-module encspeed_wb$core$hold$strobe_reg(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$hold$strobe_reg
-
-
 module encspeed_wb$core$last_dir(d,q,clock);
     
     // Module arguments
@@ -10014,506 +9964,6 @@ module encspeed_wb$core$table1$wrote_nep_reg(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$table1$wrote_nep_reg
-
-
-module encspeed_wb$core$tag(clock,reset,start,position,nep,ndt,tag_position,tag_nep,tag_ndt,valid);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  reset;
-    input wire  start;
-    input wire  [31:0] position;
-    input wire  [23:0] nep;
-    input wire  [23:0] ndt;
-    output reg  [31:0] tag_position;
-    output reg  [23:0] tag_nep;
-    output reg  [23:0] tag_ndt;
-    output reg  valid;
-    
-    // Constant declarations
-    localparam  first = 9'b11111110;
-    localparam  one = 9'b1;
-    
-    // Stub signals
-    reg  [31:0] req_position$d;
-    wire  [31:0] req_position$q;
-    reg  req_position$clock;
-    reg  [23:0] req_nep$d;
-    wire  [23:0] req_nep$q;
-    reg  req_nep$clock;
-    reg  [23:0] req_ndt$d;
-    wire  [23:0] req_ndt$q;
-    reg  req_ndt$clock;
-    reg  pending$d;
-    wire  pending$q;
-    reg  pending$clock;
-    reg  [31:0] act_position$d;
-    wire  [31:0] act_position$q;
-    reg  act_position$clock;
-    reg  [23:0] act_nep$d;
-    wire  [23:0] act_nep$q;
-    reg  act_nep$clock;
-    reg  [23:0] act_ndt$d;
-    wire  [23:0] act_ndt$q;
-    reg  act_ndt$clock;
-    reg  running$d;
-    wire  running$q;
-    reg  running$clock;
-    reg  [8:0] remaining$d;
-    wire  [8:0] remaining$q;
-    reg  remaining$clock;
-    reg  [31:0] out_position$d;
-    wire  [31:0] out_position$q;
-    reg  out_position$clock;
-    reg  [23:0] out_nep$d;
-    wire  [23:0] out_nep$q;
-    reg  out_nep$clock;
-    reg  [23:0] out_ndt$d;
-    wire  [23:0] out_ndt$q;
-    reg  out_ndt$clock;
-    reg  out_valid$d;
-    wire  out_valid$q;
-    reg  out_valid$clock;
-    
-    // Sub module instances
-    encspeed_wb$core$tag$req_position req_position(
-        .d(req_position$d),
-        .q(req_position$q),
-        .clock(req_position$clock)
-    );
-    encspeed_wb$core$tag$req_nep req_nep(
-        .d(req_nep$d),
-        .q(req_nep$q),
-        .clock(req_nep$clock)
-    );
-    encspeed_wb$core$tag$req_ndt req_ndt(
-        .d(req_ndt$d),
-        .q(req_ndt$q),
-        .clock(req_ndt$clock)
-    );
-    encspeed_wb$core$tag$pending pending(
-        .d(pending$d),
-        .q(pending$q),
-        .clock(pending$clock)
-    );
-    encspeed_wb$core$tag$act_position act_position(
-        .d(act_position$d),
-        .q(act_position$q),
-        .clock(act_position$clock)
-    );
-    encspeed_wb$core$tag$act_nep act_nep(
-        .d(act_nep$d),
-        .q(act_nep$q),
-        .clock(act_nep$clock)
-    );
-    encspeed_wb$core$tag$act_ndt act_ndt(
-        .d(act_ndt$d),
-        .q(act_ndt$q),
-        .clock(act_ndt$clock)
-    );
-    encspeed_wb$core$tag$running running(
-        .d(running$d),
-        .q(running$q),
-        .clock(running$clock)
-    );
-    encspeed_wb$core$tag$remaining remaining(
-        .d(remaining$d),
-        .q(remaining$q),
-        .clock(remaining$clock)
-    );
-    encspeed_wb$core$tag$out_position out_position(
-        .d(out_position$d),
-        .q(out_position$q),
-        .clock(out_position$clock)
-    );
-    encspeed_wb$core$tag$out_nep out_nep(
-        .d(out_nep$d),
-        .q(out_nep$q),
-        .clock(out_nep$clock)
-    );
-    encspeed_wb$core$tag$out_ndt out_ndt(
-        .d(out_ndt$d),
-        .q(out_ndt$q),
-        .clock(out_ndt$clock)
-    );
-    encspeed_wb$core$tag$out_valid out_valid(
-        .d(out_valid$d),
-        .q(out_valid$q),
-        .clock(out_valid$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        req_position$clock = clock;
-        req_nep$clock = clock;
-        req_ndt$clock = clock;
-        pending$clock = clock;
-        act_position$clock = clock;
-        act_nep$clock = clock;
-        act_ndt$clock = clock;
-        running$clock = clock;
-        remaining$clock = clock;
-        out_position$clock = clock;
-        out_nep$clock = clock;
-        out_ndt$clock = clock;
-        out_valid$clock = clock;
-        req_position$d = req_position$q;
-        req_nep$d = req_nep$q;
-        req_ndt$d = req_ndt$q;
-        pending$d = pending$q;
-        act_position$d = act_position$q;
-        act_nep$d = act_nep$q;
-        act_ndt$d = act_ndt$q;
-        running$d = running$q;
-        remaining$d = remaining$q;
-        out_position$d = out_position$q;
-        out_nep$d = out_nep$q;
-        out_ndt$d = out_ndt$q;
-        out_valid$d = out_valid$q;
-        out_valid$d = 1'b0;
-        if (running$q) begin
-            remaining$d = remaining$q - one;
-            if (remaining$q == one) begin
-                running$d = 1'b0;
-                out_position$d = act_position$q;
-                out_nep$d = act_nep$q;
-                out_ndt$d = act_ndt$q;
-                out_valid$d = 1'b1;
-            end
-        end
-        else if (pending$q) begin
-            act_position$d = req_position$q;
-            act_nep$d = req_nep$q;
-            act_ndt$d = req_ndt$q;
-            pending$d = 1'b0;
-            running$d = 1'b1;
-            remaining$d = first;
-        end
-        if (start) begin
-            req_position$d = position;
-            req_nep$d = nep;
-            req_ndt$d = ndt;
-            pending$d = 1'b1;
-        end
-        if (reset) begin
-            pending$d = 1'b0;
-            running$d = 1'b0;
-            out_valid$d = 1'b0;
-            out_position$d = out_position$q;
-            out_nep$d = out_nep$q;
-            out_ndt$d = out_ndt$q;
-        end
-        tag_position = out_position$q;
-        tag_nep = out_nep$q;
-        tag_ndt = out_ndt$q;
-        valid = out_valid$q;
-    end
-    
-endmodule // encspeed_wb$core$tag
-
-
-module encspeed_wb$core$tag$act_ndt(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$act_ndt
-
-
-module encspeed_wb$core$tag$act_nep(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$act_nep
-
-
-module encspeed_wb$core$tag$act_position(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$act_position
-
-
-module encspeed_wb$core$tag$out_ndt(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$out_ndt
-
-
-module encspeed_wb$core$tag$out_nep(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$out_nep
-
-
-module encspeed_wb$core$tag$out_position(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$out_position
-
-
-module encspeed_wb$core$tag$out_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$out_valid
-
-
-module encspeed_wb$core$tag$pending(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$pending
-
-
-module encspeed_wb$core$tag$remaining(d,q,clock);
-    
-    // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 9'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$remaining
-
-
-module encspeed_wb$core$tag$req_ndt(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$req_ndt
-
-
-module encspeed_wb$core$tag$req_nep(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$req_nep
-
-
-module encspeed_wb$core$tag$req_position(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$req_position
-
-
-module encspeed_wb$core$tag$running(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag$running
-
-
-module encspeed_wb$core$tag_ndt(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag_ndt
-
-
-module encspeed_wb$core$tag_nep(d,q,clock);
-    
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag_nep
-
-
-module encspeed_wb$core$tag_position(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // encspeed_wb$core$tag_position
 
 
 module encspeed_wb$core$timebase(clock,reset,lep,dt,timeout,tick,restart,cdt,stalled);

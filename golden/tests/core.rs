@@ -298,7 +298,7 @@ fn index_resets_and_latches_the_position() {
 fn latencies_are_as_documented() {
     // r = 0.5 (period 2·dt, x1): every step restarts Table 1, so each A rising edge (B low)
     // leads to exactly one speed_strobe, edge_to_speed_strobe edges later. dt = 480 is at
-    // least the calculator's min_lossless_dt (2·207 − 1 = 413 at N = 16, F = 16), so no
+    // least the calculator's min_lossless_dt (2·208 − 1 = 415 at N = 16, F = 16), so no
     // update is replaced before it is computed.
     const DT_LONG: u64 = 480;
     const PERIOD: u64 = 2 * DT_LONG;

@@ -6,7 +6,8 @@
 
 use golden::estimator::speed_calc::{
     latency_cycles, long_division, min_lossless_dt, speed_bits, speed_lsb_error, speeds,
-    FormatError, SpeedCalcInputs, SpeedCalcModel, SpeedCalcOutputs, SpeedFormat, Speeds,
+    FormatError, RequestTag, SpeedCalcInputs, SpeedCalcModel, SpeedCalcOutputs, SpeedFormat,
+    Speeds,
 };
 use golden::ideal;
 use golden::params::{Params, Spec};
@@ -248,15 +249,31 @@ const IDLE: SpeedCalcInputs = SpeedCalcInputs {
     ndt: 0,
     negative: false,
     shift: 0,
+    position: 0,
 };
 
+/// A start whose carried position is made from its operands (so a published tag shows
+/// which request it came from).
 fn start(nep: u64, ndt: u64, negative: bool) -> SpeedCalcInputs {
     SpeedCalcInputs {
         start: true,
         nep,
         ndt,
         negative,
+        position: tag_position(nep, ndt),
         ..IDLE
+    }
+}
+
+fn tag_position(nep: u64, ndt: u64) -> u64 {
+    (0xC000_0000 | (nep << 12) | ndt) & 0xFFFF_FFFF
+}
+
+fn tag(nep: u64, ndt: u64) -> RequestTag {
+    RequestTag {
+        position: tag_position(nep, ndt),
+        nep,
+        ndt,
     }
 }
 
@@ -294,12 +311,12 @@ fn speeds_are_mode_scaled_by_the_latched_shift() {
 #[test]
 fn latency_is_fixed_by_hand() {
     // N = 24, F = 16: S = 41 quotient bits; 1 edge to take the request, 3 × (a set-up and
-    // 41 steps of two edges each) = 3 × 84 = 252, 2 edges to publish: 255 edges from the
-    // start edge to `valid`.
-    assert_eq!(latency_cycles(24, 16), 255);
-    // N = 8, F = 8: 1 + 3·(2 + 34) + 2 = 111; N = 32, F = 24: 1 + 3·(2 + 114) + 2 = 351.
-    assert_eq!(latency_cycles(8, 8), 111);
-    assert_eq!(latency_cycles(32, 24), 351);
+    // 41 steps of two edges each) = 3 × 84 = 252, 3 edges to round and publish: 256 edges
+    // from the start edge to `valid`.
+    assert_eq!(latency_cycles(24, 16), 256);
+    // N = 8, F = 8: 1 + 3·(2 + 34) + 3 = 112; N = 32, F = 24: 1 + 3·(2 + 114) + 3 = 352.
+    assert_eq!(latency_cycles(8, 8), 112);
+    assert_eq!(latency_cycles(32, 24), 352);
     for (n, fb) in [(8, 0), (8, 8), (16, 16), (24, 16), (32, 24)] {
         let f = fmt(n, fb);
         let l = latency_cycles(n, fb) as usize;
@@ -317,6 +334,13 @@ fn latency_is_fixed_by_hand() {
                 Speeds::default()
             };
             assert_eq!(o.speeds, want, "speeds after edge {k}");
+            let want_tag = if k >= l {
+                tag(4, 1)
+            } else {
+                RequestTag::default()
+            };
+            assert_eq!(o.tag, want_tag, "tag after edge {k}");
+            assert_eq!(o.have_speeds, k >= l, "have_speeds after edge {k}");
         }
     }
 }
@@ -337,14 +361,18 @@ fn a_start_while_busy_is_served_next_with_its_own_values() {
         };
         let o = m.step(inp);
         if o.valid {
-            valids.push((k, o.speeds));
+            valids.push((k, o.speeds, o.tag));
         }
         assert_eq!(o.busy, k < 2 * l, "busy after edge {k}");
     }
-    // First result at edge L; the pending request begins at edge L + 1, result at 2L.
+    // First result at edge L; the pending request begins at edge L + 1, result at 2L; each
+    // with the tag of its own request.
     assert_eq!(
         valids,
-        vec![(l, speeds(f, 10, 1, false)), (2 * l, speeds(f, 1, 3, true))]
+        vec![
+            (l, speeds(f, 10, 1, false), tag(10, 1)),
+            (2 * l, speeds(f, 1, 3, true), tag(1, 3))
+        ]
     );
 }
 

@@ -67,8 +67,6 @@ pub use emit::tops::Top;
 pub use emit::wb::emit_wb;
 pub use emit::{emit_core, emit_ecc, EmitInfo};
 pub use estimator::speed_calc::{speed_calc_verilog, SpeedCalc};
-pub use estimator::speed_hold::SpeedHold;
-pub use estimator::speed_tag::SpeedTag;
 pub use estimator::sync_estimator::SyncEstimator;
 pub use estimator::timebase::Timebase;
 pub use frontend::glitch_filter::{glitch_filter_verilog, GlitchFilter};

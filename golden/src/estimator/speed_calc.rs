@@ -57,15 +57,21 @@
 //!   request that has not begun): the calculator always ends up computing the values of
 //!   the **last** start.
 //! * At the first edge at which the calculator is idle and a request is pending, it takes the
-//!   request and begins. [`latency_cycles`]`(N, F)` = 6·(N + F + 1) + 9 edges after the start
+//!   request and begins. [`latency_cycles`]`(N, F)` = 6·(N + F + 1) + 10 edges after the start
 //!   edge (for a start while idle), the three outputs change together and `valid` is high for
 //!   one cycle. The outputs are registers, held until the next `valid`.
+//! * The request carries a `position` (the core's span end, [`POSITION_BITS`] bits) beside
+//!   Nep1 and Ndt1: with the speeds the calculator publishes the position, Nep1 and Ndt1 of
+//!   the request they were computed from (`tag`), so a user can tell which stretch of disc a
+//!   speed belongs to whatever the rate of requests. `have_speeds` is high from the first
+//!   `valid` after reset on.
 //! * `busy` is high while a computation runs or a request is pending; it is low in the
 //!   `valid` cycle unless another request is waiting. A request that was pending when a
 //!   computation ends begins at the edge after `valid`, so back-to-back results are
 //!   [`latency_cycles`] edges apart.
-//! * `reset` (synchronous, active high) wins over `start`: the outputs become 0, `valid` and
-//!   `busy` 0, and a computation in progress or pending is abandoned.
+//! * `reset` (synchronous, active high) wins over `start`: the outputs (speeds, tag and
+//!   `have_speeds`) become 0, `valid` and `busy` 0, and a computation in progress or pending
+//!   is abandoned.
 //!
 //! # Updates that are never lost
 //!
@@ -78,6 +84,7 @@
 //! computed). Both the bound and its tightness are tested.
 
 use crate::arith::latest_request::LatestRequest;
+use crate::params::POSITION_BITS;
 use std::fmt;
 
 /// Narrowest counter width N (bits), as [`crate::params::MIN_COUNTER_BITS`].
@@ -101,12 +108,14 @@ pub const fn product_bits(counter_bits: u32) -> u32 {
 }
 
 /// Clock edges from the edge that samples a `start` (calculator idle) to the edge after
-/// which `valid` is high: 6·(N + F + 1) + 9 (one edge to take the request, then per division
-/// a set-up and N + F + 1 quotient bits, then the publication; each of these but the first
-/// takes two edges, because the hardware's wide additions are split over two cycles to meet
-/// its clock: 1 + 3·(2 + 2·(N + F + 1)) + 2).
+/// which `valid` is high: 6·(N + F + 1) + 10 (one edge to take the request, then per
+/// division a set-up and N + F + 1 quotient bits, each two edges because the hardware's
+/// wide additions are split over two cycles to meet its clock, then three edges for the
+/// last rounding and the publication: 1 + 3·(2 + 2·(N + F + 1)) + 3). The publication's
+/// third edge writes the output registers the user reads, so no second rank of output
+/// registers follows the calculator in the core.
 pub const fn latency_cycles(counter_bits: u32, frac_bits: u32) -> u32 {
-    6 * speed_bits(counter_bits, frac_bits) + 9
+    6 * speed_bits(counter_bits, frac_bits) + 10
 }
 
 /// Shortest dt (clock cycles) at which no `update` of the core is ever replaced before it is
@@ -391,6 +400,19 @@ pub struct SpeedCalcInputs {
     /// log2 of the decoder steps per line (0 = x1, 1 = x2, 2 = x4; 3 acts as 2); latched
     /// at a start. The speeds are [`mode_scale`]d by it.
     pub shift: u32,
+    /// Position carried with the request ([`POSITION_BITS`] bits); latched at a start.
+    pub position: u64,
+}
+
+/// What a request was made from, published with its speeds.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RequestTag {
+    /// The request's `position`.
+    pub position: u64,
+    /// The request's Nep1.
+    pub nep: u64,
+    /// The request's Ndt1.
+    pub ndt: u64,
 }
 
 /// Outputs of the calculator after a rising clock edge (all from registers).
@@ -402,6 +424,10 @@ pub struct SpeedCalcOutputs {
     pub valid: bool,
     /// The speeds (held).
     pub speeds: Speeds,
+    /// The request the speeds were computed from (held, written with them).
+    pub tag: RequestTag,
+    /// A result has been published since reset.
+    pub have_speeds: bool,
 }
 
 /// Cycle-by-cycle model of `hdl::SpeedCalc`: the request register and the fixed schedule,
@@ -410,7 +436,7 @@ pub struct SpeedCalcOutputs {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SpeedCalcModel {
     format: SpeedFormat,
-    timing: LatestRequest<(u64, u64, bool, u32), Speeds>,
+    timing: LatestRequest<(RequestTag, bool, u32), (Speeds, RequestTag)>,
     out: SpeedCalcOutputs,
 }
 
@@ -435,7 +461,7 @@ impl SpeedCalcModel {
     }
 
     /// One rising clock edge with `inp` applied; the outputs after it. Panics if `nep` or
-    /// `ndt` does not fit N bits (the ports are N wide).
+    /// `ndt` does not fit N bits or `position` [`POSITION_BITS`] bits (the ports' widths).
     pub fn step(&mut self, inp: SpeedCalcInputs) -> SpeedCalcOutputs {
         let max = self.format.counter_max();
         assert!(
@@ -443,29 +469,39 @@ impl SpeedCalcModel {
             "nep or ndt does not fit {} bits",
             self.format.counter_bits()
         );
+        assert!(
+            inp.position >> POSITION_BITS == 0,
+            "position does not fit {POSITION_BITS} bits"
+        );
         let mut out = SpeedCalcOutputs {
             valid: false,
             ..self.out
         };
         let format = self.format;
-        let start = inp
-            .start
-            .then_some((inp.nep, inp.ndt, inp.negative, inp.shift.min(2)));
-        if let Some(result) = self.timing.edge(
+        let tag = RequestTag {
+            position: inp.position,
+            nep: inp.nep,
+            ndt: inp.ndt,
+        };
+        let start = inp.start.then_some((tag, inp.negative, inp.shift.min(2)));
+        if let Some((result, tag)) = self.timing.edge(
             start,
             inp.reset,
             format.latency_cycles(),
-            |(nep, ndt, negative, shift)| {
-                let s = speeds(format, nep, ndt, negative);
-                Speeds {
+            |(tag, negative, shift)| {
+                let s = speeds(format, tag.nep, tag.ndt, negative);
+                let scaled = Speeds {
                     n1: mode_scale(s.n1, shift),
                     n2: mode_scale(s.n2, shift),
                     n3: mode_scale(s.n3, shift),
-                }
+                };
+                (scaled, tag)
             },
         ) {
             out.speeds = result;
+            out.tag = tag;
             out.valid = true;
+            out.have_speeds = true;
         }
         if inp.reset {
             out = SpeedCalcOutputs::default();
@@ -484,9 +520,9 @@ mod tests {
     fn widths_and_latency() {
         assert_eq!(speed_bits(24, 16), 41);
         assert_eq!(product_bits(24), 49);
-        // By hand: S = 41, 1 + 3·(2 + 2·41) + 2 = 255; 2·255 − 1 = 509.
-        assert_eq!(latency_cycles(24, 16), 255);
-        assert_eq!(min_lossless_dt(24, 16), 509);
+        // By hand: S = 41, 1 + 3·(2 + 2·41) + 3 = 256; 2·256 − 1 = 511.
+        assert_eq!(latency_cycles(24, 16), 256);
+        assert_eq!(min_lossless_dt(24, 16), 511);
         assert_eq!(speed_lsb_error(16), 1.0 / 131_072.0);
     }
 

@@ -30,7 +30,7 @@
 //!   resets Table 1 and counts that step as the first pulse of the new measurement (Cep = 1,
 //!   the state a restart at that step leaves, with Nep1 and Ndt1 cleared), so the first
 //!   window starts at a pulse as every later one does; it also resets the speed calculator
-//!   and the speed registers (speeds 0, `valid` low). The estimator is **primed** by its
+//!   and with it the speed registers (speeds 0, `valid` low). The estimator is **primed** by its
 //!   first restart after that (a pulse after at least one dt tick, which writes an Ndt1
 //!   measured between two steps); only then are its updates sent to the speed calculator.
 //!   So no speed ever mixes the two directions, and none is computed from an Ndt1 or Nep1
@@ -71,14 +71,13 @@
 //!   moved within the timeout (`stalled` low) and the configuration is legal. Sticky faults
 //!   do not clear it; they are reported beside it.
 
-use crate::arith::latest_request::LatestRequest;
 use crate::baselines::baseline_speeds::{
     BaselineFormat, BaselineRequest, BaselineSpeedsInputs, BaselineSpeedsModel,
 };
 use crate::baselines::et_timer::{EtInputs, EtTimer};
 use crate::baselines::mt_counter::{MtCounter, MtInputs};
 use crate::baselines::pc_counter::{PcCounter, PcInputs};
-use crate::estimator::speed_calc::{self, SpeedCalcInputs, SpeedCalcModel, SpeedFormat, Speeds};
+use crate::estimator::speed_calc::{SpeedCalcInputs, SpeedCalcModel, SpeedFormat};
 use crate::estimator::sync_estimator::Table1;
 use crate::frontend::{
     CounterInputs, DecoderInputs, GlitchFilter, GlitchFilterInputs, PositionCounter,
@@ -198,16 +197,6 @@ port_struct! {
     }
 }
 
-/// What the speed calculator's request carries beside Nep1 and Ndt1, delayed as the
-/// calculator delays its result ([`LatestRequest`] with the same latency and the same
-/// starts and resets, so the two publish at the same edges).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-struct SpeedTag {
-    position: u64,
-    nep: u64,
-    ndt: u64,
-}
-
 /// log2 of the steps per line for `cfg_mode` (x1: 0, x2: 1, x4 and 3: 2).
 pub fn mode_shift(cfg_mode: u8) -> u32 {
     match cfg_mode {
@@ -243,17 +232,12 @@ pub struct CoreModel {
     timeout_reg: u64,
     engine: Table1,
     primed: bool,
+    /// The speed calculator; its output registers are the core's `speed_n1..3`,
+    /// `speed_strobe`, `speed_position/nep/ndt` and the "a speed since reset" of `valid`.
     calc: SpeedCalcModel,
-    calc_latency: u32,
-    tag: LatestRequest<SpeedTag, SpeedTag>,
-    tag_out: SpeedTag,
-    speed_tag: SpeedTag,
     window_last: u64,
     restart_pos: u64,
     restart_seen: bool,
-    speeds: Speeds,
-    speed_strobe: bool,
-    speed_ok: bool,
     cfg_error: bool,
     faults: [bool; 3],
     glitch_count: u64,
@@ -296,16 +280,9 @@ impl CoreModel {
             engine: Table1::new(p),
             primed: false,
             calc: SpeedCalcModel::new(format),
-            calc_latency: speed_calc::latency_cycles(p.counter_bits(), SPEED_FRAC_BITS),
-            tag: LatestRequest::new(),
-            tag_out: SpeedTag::default(),
-            speed_tag: SpeedTag::default(),
             window_last: 0,
             restart_pos: 0,
             restart_seen: false,
-            speeds: Speeds::default(),
-            speed_strobe: false,
-            speed_ok: false,
             cfg_error: false,
             faults: [false; 3],
             glitch_count: 0,
@@ -362,7 +339,6 @@ impl CoreModel {
         let dec = self.decoder.state();
         let pos = self.position.outputs();
         let t1 = self.engine.outputs();
-        let calc = self.calc.outputs();
         let pc = self.pc.outputs();
         let et = self.et.outputs();
         let mt = self.mt.outputs();
@@ -409,6 +385,15 @@ impl CoreModel {
         }
         self.primed = !engine_reset && (self.primed || restart);
         let calc_start = t1.update && primed_before;
+        // Span ends (`speed_position`): the restart pulse is in `position` the edge after
+        // its restart; the window's last pulse is `position` at the tick that writes Nep1
+        // (a pulse on that tick is not in the window). The calculator carries the span end
+        // of each request with it and publishes it with the request's speeds.
+        let restart_now = if self.restart_seen {
+            pos.position
+        } else {
+            self.restart_pos
+        };
         self.calc.step(SpeedCalcInputs {
             reset: engine_reset,
             start: calc_start,
@@ -416,24 +401,11 @@ impl CoreModel {
             ndt: t1.ndt,
             negative: !self.last_dir,
             shift,
-        });
-        let tag_before = self.tag_out;
-        // Span ends (`speed_position`): the restart pulse is in `position` the edge after
-        // its restart; the window's last pulse is `position` at the tick that writes Nep1
-        // (a pulse on that tick is not in the window).
-        let restart_now = if self.restart_seen {
-            pos.position
-        } else {
-            self.restart_pos
-        };
-        let request = calc_start.then_some(SpeedTag {
             position: if t1.nep == 1 {
                 restart_now
             } else {
                 self.window_last
             },
-            nep: t1.nep,
-            ndt: t1.ndt,
         });
         let written = self.engine.state();
         if engine_reset {
@@ -446,25 +418,6 @@ impl CoreModel {
             }
             self.restart_pos = restart_now;
             self.restart_seen = written.restarted;
-        }
-        if let Some(t) = self
-            .tag
-            .edge(request, engine_reset, self.calc_latency, |t| t)
-        {
-            self.tag_out = t;
-        }
-        if engine_reset {
-            self.speeds = Speeds::default();
-            self.speed_tag = SpeedTag::default();
-            self.speed_strobe = false;
-            self.speed_ok = false;
-        } else {
-            self.speed_strobe = calc.valid;
-            if calc.valid {
-                self.speeds = calc.speeds;
-                self.speed_tag = tag_before;
-                self.speed_ok = true;
-            }
         }
         let (r, st, fw) = (rst, dec.step, dec.forward);
         self.pc.step(PcInputs {
@@ -555,6 +508,7 @@ impl CoreModel {
         let dec = self.decoder.state();
         let pos = self.position.outputs();
         let stalled = self.engine.state().cdt >= self.timeout_reg;
+        let calc = self.calc.outputs();
         CoreOutputs {
             position: pos.position,
             z_latch: pos.z_latch,
@@ -563,15 +517,15 @@ impl CoreModel {
             nep: t1.nep,
             ndt: t1.ndt,
             update: t1.update,
-            speed_n1: self.speeds.n1,
-            speed_n2: self.speeds.n2,
-            speed_n3: self.speeds.n3,
-            speed_strobe: self.speed_strobe,
+            speed_n1: calc.speeds.n1,
+            speed_n2: calc.speeds.n2,
+            speed_n3: calc.speeds.n3,
+            speed_strobe: calc.valid,
             speed_pc: self.baseline.outputs().speeds.pc,
             speed_et: self.baseline.outputs().speeds.et,
             speed_mt: self.baseline.outputs().speeds.mt,
             baseline_strobe: self.baseline.outputs().valid,
-            valid: self.speed_ok && !stalled && !self.cfg_error,
+            valid: calc.have_speeds && !stalled && !self.cfg_error,
             stalled,
             fault_illegal: self.faults[0],
             fault_overspeed: self.faults[1],
@@ -580,9 +534,9 @@ impl CoreModel {
             glitch_count: self.glitch_count,
             illegal_count: dec.illegal_count,
             rev_error_count: pos.rev_error_count,
-            speed_position: self.speed_tag.position,
-            speed_nep: self.speed_tag.nep,
-            speed_ndt: self.speed_tag.ndt,
+            speed_position: calc.tag.position,
+            speed_nep: calc.tag.nep,
+            speed_ndt: calc.tag.ndt,
             mt_strobe: self.mt.outputs().strobe,
             mt_m: self.mt.outputs().m,
             mt_t: self.mt.outputs().t,

@@ -183,11 +183,12 @@ pub struct Latency {
     /// From the edge that first samples a new level of A or B to the edge after which
     /// `position` and (for a restart) `nep`/`ndt`/`update` show it: 3 + max(L, 1).
     pub edge_to_position: u32,
-    /// Speed calculator: a start to its result, 6·(N + F + 1) + 9.
+    /// Speed calculator: a start to its result, 6·(N + F + 1) + 10 (its output registers
+    /// are the core's speed outputs).
     pub speed_calc: u32,
     /// From the edge that first samples an A or B edge whose step restarts Table 1 (writes
     /// Ndt1) to the edge after which `speed_strobe` shows the speeds computed from it:
-    /// edge_to_position + 1 + speed_calc + 1.
+    /// edge_to_position + 1 + speed_calc.
     pub edge_to_speed_strobe: u32,
     /// From the edge that raised `mt_strobe` (a window end of the PC and M/T counters) to
     /// the edge after which `baseline_strobe` shows the window's speeds: the baseline
@@ -217,7 +218,7 @@ impl Latency {
         Latency {
             edge_to_position,
             speed_calc,
-            edge_to_speed_strobe: edge_to_position + 1 + speed_calc + 1,
+            edge_to_speed_strobe: edge_to_position + 1 + speed_calc,
             window_to_baseline_strobe: 1 + baseline,
             reset_to_effect: 1,
             config_to_effect: 1,

@@ -230,11 +230,6 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     den: DFF<Bits<N>>,
     /// Numerator bits out at the top, quotient bits in at the bottom.
     dq: DFF<Bits<S>>,
-    /// `dq`'s low S − 1 bits were all ones at the edge before: when SETUP or FINISH
-    /// rounds a quotient, its bits above bit 0 (registered from every `dq`, so that no
-    /// S-bit reduction, and nothing of the division step, lies in front of the round
-    /// adder's carry chain).
-    upper_all_ones: DFF<Bit>,
     // Results.
     stage_et: DFF<Bits<S>>,
     /// The round adder's sum is the ET result (the cycle after SETUP).
@@ -299,6 +294,14 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     sel_neg: DFF<Bit>,
     sel_zero: DFF<Bit>,
     sel_sat: DFF<Bit>,
+    /// Quotient bit 0 may round up: `dq`'s low S − 1 bits were not all ones at the edge
+    /// before (when SETUP or FINISH rounds a quotient, its bits above bit 0), and the
+    /// selected result neither saturates nor is zero; registered at every edge from `dq`
+    /// and the next values of `sel_sat` and `sel_zero`, so that no S-bit reduction, no
+    /// flag logic and nothing of the division step lies in front of the round adder's
+    /// carry chain: the increment is bit 0 with this one register, one LUT with the sign
+    /// (three LUT levels before, the core's critical path on two of three HX8K seeds).
+    round_enable: DFF<Bit>,
     /// Quotient >> 1 (or a special value).
     half: Signal<Local, Bits<S>>,
     /// Quotient bit 0: the rounding increment.
@@ -400,7 +403,6 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             part_rem: Default::default(),
             den: Default::default(),
             dq: Default::default(),
-            upper_all_ones: Default::default(),
             stage_et: Default::default(),
             et_rounding: Default::default(),
             out_pc: Default::default(),
@@ -439,6 +441,7 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             sel_neg: Default::default(),
             sel_zero: Default::default(),
             sel_sat: Default::default(),
+            round_enable: Default::default(),
             half: Default::default(),
             round_bit: Default::default(),
             addend: Default::default(),
@@ -506,7 +509,6 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             second,
             den,
             dq,
-            upper_all_ones,
             stage_et,
             et_rounding,
             out_pc,
@@ -515,7 +517,8 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             valid_reg,
             sel_neg,
             sel_zero,
-            sel_sat
+            sel_sat,
+            round_enable
         );
         self.take.next = (self.state.q.val() == self.st_idle.val()) & self.pending.q.val();
         self.dt_eff.next = self.req_dt.q.val();
@@ -637,18 +640,24 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
             self.sel_sat.d.next = self.w_mt_sat.q.val();
         }
         self.half.next = self.dq.q.val() >> self.sh_one.val();
-        // q all ones is bit 0 and the bits above it: r & ¬(all ones) = r & ¬(bits above).
-        self.upper_all_ones.d.next =
-            (self.dq.q.val() & self.s_low_bits.val()) == self.s_low_bits.val();
-        self.round_bit.next = ((self.dq.q.val() & self.s_one.val()) != self.s_zero.val())
-            & !self.upper_all_ones.q.val();
+        // q all ones is bit 0 and the bits above it: r & ¬(all ones) = r & ¬(bits above);
+        // with the next values of sel_sat and sel_zero as assigned above.
+        self.round_enable.d.next = ((self.dq.q.val() & self.s_low_bits.val())
+            != self.s_low_bits.val())
+            & !self.w_et_zero.q.val();
+        if self.phase.q.val() {
+            self.round_enable.d.next = ((self.dq.q.val() & self.s_low_bits.val())
+                != self.s_low_bits.val())
+                & !self.w_mt_zero.q.val()
+                & !self.w_mt_sat.q.val();
+        }
+        self.round_bit.next =
+            ((self.dq.q.val() & self.s_one.val()) != self.s_zero.val()) & self.round_enable.q.val();
         if self.sel_sat.q.val() {
             self.half.next = self.s_max.val();
-            self.round_bit.next = false;
         }
         if self.sel_zero.q.val() {
             self.half.next = self.s_zero.val();
-            self.round_bit.next = false;
         }
         self.addend.next = self.half.val();
         if self.sel_neg.q.val() {

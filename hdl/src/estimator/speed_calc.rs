@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! Speed calculator: Rairán's n1, n2 and n3 from the registers Nep1 and Ndt1, as signed
 //! fixed-point speeds, by a sequential divider and a sequential shift-add multiplier.
-//! `encspeed_core` starts one at each Table 1 update (and a `SpeedTag` beside it); its
-//! bit-true model is [`golden::estimator::speed_calc::SpeedCalcModel`], whose module docs
+//! `encspeed_core` starts one at each Table 1 update, and its output registers are the
+//! core's speed outputs; its bit-true model is [`golden::estimator::speed_calc::SpeedCalcModel`], whose module docs
 //! state the values, the rounding rule and the timing this block implements.
 //!
 //! # Generation parameters
@@ -30,10 +30,15 @@
 //! | `ndt` | in | N | Ndt1 (dt intervals), unsigned |
 //! | `negative` | in | 1 | direction: 1 = reverse, the speeds come out negative |
 //! | `mode_shift` | in | 2 | log2 of the decoder steps per line (0 = x1, 1 = x2, 2 = x4; 3 acts as 2), latched with `start` |
+//! | `position` | in | 32 | carried with the request (the core's span end), latched with `start` |
 //! | `speed_n1` | out | N+F+1 | n1 = Nep/Ndt, eq. (5) |
 //! | `speed_n2` | out | N+F+1 | n2, eq. (6) |
 //! | `speed_n3` | out | N+F+1 | n3, eq. (11): the estimate to use |
-//! | `valid` | out | 1 | one cycle: the three speeds were just written (together) |
+//! | `speed_position` | out | 32 | `position` of the request the speeds were computed from |
+//! | `speed_nep` | out | N | `nep` of that request |
+//! | `speed_ndt` | out | N | `ndt` of that request |
+//! | `valid` | out | 1 | one cycle: the three speeds and the tag were just written (together) |
+//! | `have_speeds` | out | 1 | a result has been published since reset |
 //! | `busy` | out | 1 | a computation runs or a request is pending |
 //!
 //! Speeds are two's complement, Q(N).F in units of ω_lim (lines per dt): the value is
@@ -47,7 +52,7 @@
 //! # Timing
 //!
 //! A `start` sampled at edge k while idle gives `valid` after edge k + L, with
-//! L = 6·(N + F + 1) + 9 ([`golden::estimator::speed_calc::latency_cycles`]; 255 for N = 24, F = 16),
+//! L = 6·(N + F + 1) + 10 ([`golden::estimator::speed_calc::latency_cycles`]; 256 for N = 24, F = 16),
 //! whatever the operands. `busy` is high after edges k … k + L − 1. A `start` while busy
 //! latches its inputs into the one-deep request register (replacing a request that has not
 //! begun) and is served at the edge after the current `valid`, so the values of the last
@@ -58,11 +63,17 @@
 //!
 //! Schedule after a request is taken (edge k + 1): a set-up and S = N + F + 1 divider
 //! steps for each of n1, n2 and n3, then the publication. The state register walks
-//! IDLE → SETUP → STEP ×S → SETUP → … → FINISH → IDLE, and every state but IDLE lasts two
-//! cycles (`second`): each wide addition is a [`TwoCycleAdder`](crate::TwoCycleAdder),
+//! IDLE → SETUP → STEP ×S → SETUP → … → FINISH → IDLE, and every state but IDLE and FINISH
+//! lasts two cycles (`second`): each wide addition is a [`TwoCycleAdder`](crate::TwoCycleAdder),
 //! whose low half is registered in the first cycle and whose high half and carry out are
-//! ready in the second, so no path crosses more than about half a carry chain
-//! (L = 1 + 3·(2 + 2S) + 2). The operands of each addition are registers that change only
+//! ready in the second, so no path crosses more than about half a carry chain. FINISH lasts
+//! three (`publish` marks the third): the rounding adder's sum stands from the second on and
+//! the outputs are written at the third's edge, one edge later than the sum allows, because
+//! these registers are the core's speed outputs: the core used to copy them into a second
+//! rank of registers one edge later (`SpeedHold`), and the request's tag travelled in a
+//! second request machine beside this one (`SpeedTag`); the request's position now rides in
+//! the request and working registers with Nep1 and Ndt1, so both blocks are gone
+//! (L = 1 + 3·(2 + 2S) + 3). The operands of each addition are registers that change only
 //! at the second cycle's edge.
 //!
 //! * **Divider** (non-restoring, radix 2, shared by the three divisions). For num/den with
@@ -117,21 +128,28 @@
 //!
 //! # Resources
 //!
-//! Registers: the request (2N + 4), its working copy (2N + 6), Nep − 1 and Ndt + 1 (2P, of
-//! which yosys keeps about 2N + 2: the high bits of Ndt + 1 are constant), the divider
-//! (3P + S), the multiplier (3P), staging and outputs (5S), a 6-bit step counter, 10
-//! control bits, the rounding increment for r = 0 and 1 (2 × 2 bits), and in the four two-cycle adders the low sums and the high operands
-//! (about 2P each for the divider and the multiplier, 2S for the rounding). For N = 24,
-//! F = 16, yosys 0.23 `synth_ice40` maps the block (as it sits in the generated
-//! `encspeed_core`) to 880 flip-flops, 924 LUT4 and 278 carry cells (826, 914 and 282
-//! with the restoring divider and n2's operands formed at the set-up; 608, 867 and 278
-//! with one-cycle 49- and 41-bit additions). The split took the block off the critical
-//! path of `encspeed_wb` on the iCE40 HX8K: before, the divider's 49-bit trial
-//! subtraction was 10.5 ns of an 18 ns path
+//! Registers: the request (2N + 4, and the carried position, 32), its working copy
+//! (2N + 6, and 32), Nep − 1 and Ndt + 1 (2P, of which yosys keeps about 2N + 2: the high
+//! bits of Ndt + 1 are constant), the divider (3P + S), the multiplier (3P), staging and
+//! outputs (5S), the published tag (32 + 2N), a 6-bit step counter, 12 control bits, the
+//! rounding increment for r = 0 and 1 (2 × 2 bits), and in the four two-cycle adders the
+//! low sums and the high operands (about 2P each for the divider and the multiplier, 2S
+//! for the rounding). The tag registers only load (flip-flops with an enable, no LUT). For
+//! N = 24, F = 16, yosys 0.23 `synth_ice40` maps the block (as it sits in the generated
+//! `encspeed_core`) to 1 026 flip-flops, 921 LUT4 and 278 carry cells (880, 919 and 278
+//! before it carried the tag and became the core's output registers; the core's
+//! `SpeedTag`, a second request machine of 250 flip-flops, and `SpeedHold`, a second rank
+//! of 123 output flip-flops, went with it; 826, 914 and 282 with the restoring divider
+//! and n2's operands formed at the set-up; 608, 867 and 278 with one-cycle 49- and 41-bit
+//! additions). The split took the block off the critical path of `encspeed_wb` on the
+//! iCE40 HX8K: before, the divider's 49-bit trial subtraction was 10.5 ns of an 18 ns path
 //! (docs/design-decisions.md, "Timing closure on the iCE40").
 
+use golden::params::POSITION_BITS;
 use rust_hdl::prelude::*;
 
+/// Width of the carried position (the core's `position`).
+const C: usize = POSITION_BITS as usize;
 /// Width of the step counter: it holds S − 1 ≤ 56.
 const COUNT_BITS: usize = 6;
 /// Width of the state and phase registers.
@@ -166,23 +184,35 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     pub negative: Signal<In, Bit>,
     /// log2 of the decoder steps per line: 0 = x1, 1 = x2, 2 = x4 (3 acts as 2).
     pub mode_shift: Signal<In, Bits<2>>,
+    /// Carried with the request and published with its speeds (the core's span end).
+    pub position: Signal<In, Bits<C>>,
     /// n1 = Nep/Ndt, Q(N).F two's complement, units of ω_lim.
     pub speed_n1: Signal<Out, Bits<S>>,
     /// n2, eq. (6), Q(N).F two's complement, units of ω_lim.
     pub speed_n2: Signal<Out, Bits<S>>,
     /// n3, eq. (11), Q(N).F two's complement, units of ω_lim.
     pub speed_n3: Signal<Out, Bits<S>>,
-    /// One-cycle strobe: the three speeds were just written.
+    /// `position` of the request the speeds were computed from.
+    pub speed_position: Signal<Out, Bits<C>>,
+    /// `nep` of the request the speeds were computed from.
+    pub speed_nep: Signal<Out, Bits<N>>,
+    /// `ndt` of the request the speeds were computed from.
+    pub speed_ndt: Signal<Out, Bits<N>>,
+    /// One-cycle strobe: the three speeds and the tag were just written.
     pub valid: Signal<Out, Bit>,
+    /// A result has been published since reset.
+    pub have_speeds: Signal<Out, Bit>,
     /// A computation runs or a request is pending.
     pub busy: Signal<Out, Bit>,
     // Request register.
+    req_position: DFF<Bits<C>>,
     req_nep: DFF<Bits<N>>,
     req_ndt: DFF<Bits<N>>,
     req_neg: DFF<Bit>,
     req_shift: DFF<Bits<2>>,
     pending: DFF<Bit>,
     // Working copy of the request.
+    w_position: DFF<Bits<C>>,
     w_nep: DFF<Bits<N>>,
     w_ndt: DFF<Bits<N>>,
     /// Nep ≥ 2·Ndt (n1 ≥ 2): the high-speed forms of n2 and n3.
@@ -200,6 +230,8 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     /// The second cycle of a state: every state lasts two cycles, the first lets the
     /// adders' registered low halves take their operands.
     second: DFF<Bit>,
+    /// The third cycle of FINISH: the outputs are written at its edge.
+    publish: DFF<Bit>,
     /// The multiplier steps (the first N + 1 steps of the n1 division).
     mul_on: DFF<Bit>,
     /// `count` = F, the last multiplier step (set with `count`, from its set-up on): a
@@ -220,7 +252,11 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     out_n1: DFF<Bits<S>>,
     out_n2: DFF<Bits<S>>,
     out_n3: DFF<Bits<S>>,
+    out_position: DFF<Bits<C>>,
+    out_nep: DFF<Bits<N>>,
+    out_ndt: DFF<Bits<N>>,
     valid_reg: DFF<Bit>,
+    have_reg: DFF<Bit>,
     // Combinational.
     /// The working Nep and Ndt widened to P bits.
     nep_wide: Signal<Local, Bits<P>>,
@@ -273,6 +309,7 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     rounded: Signal<Local, Bits<S>>,
     // Constants, each of the width it is used at.
     n_zero: Constant<Bits<N>>,
+    c_zero: Constant<Bits<C>>,
     p_zero: Constant<Bits<P>>,
     p_one: Constant<Bits<P>>,
     /// 2^(P − 1): the partial remainder's carry bit and the numerator bit brought down.
@@ -336,16 +373,23 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             ndt: Default::default(),
             negative: Default::default(),
             mode_shift: Default::default(),
+            position: Default::default(),
             speed_n1: Default::default(),
             speed_n2: Default::default(),
             speed_n3: Default::default(),
+            speed_position: Default::default(),
+            speed_nep: Default::default(),
+            speed_ndt: Default::default(),
             valid: Default::default(),
+            have_speeds: Default::default(),
             busy: Default::default(),
+            req_position: Default::default(),
             req_nep: Default::default(),
             req_ndt: Default::default(),
             req_neg: Default::default(),
             req_shift: Default::default(),
             pending: Default::default(),
+            w_position: Default::default(),
             w_nep: Default::default(),
             w_ndt: Default::default(),
             w_high: Default::default(),
@@ -357,6 +401,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             phase: Default::default(),
             count: Default::default(),
             second: Default::default(),
+            publish: Default::default(),
             mul_on: Default::default(),
             mul_last: Default::default(),
             part_rem: Default::default(),
@@ -371,7 +416,11 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             out_n1: Default::default(),
             out_n2: Default::default(),
             out_n3: Default::default(),
+            out_position: Default::default(),
+            out_nep: Default::default(),
+            out_ndt: Default::default(),
             valid_reg: Default::default(),
+            have_reg: Default::default(),
             nep_wide: Default::default(),
             ndt_wide: Default::default(),
             nep_less_one: Default::default(),
@@ -401,6 +450,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             sum_negative: Default::default(),
             rounded: Default::default(),
             n_zero: Constant::new(0.into()),
+            c_zero: Constant::new(0.into()),
             p_zero: Constant::new(0.into()),
             p_one: Constant::new(1.into()),
             // P can be 65: build 2^(P−1) bit by bit rather than from a u64.
@@ -447,11 +497,13 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         dff_setup!(
             self,
             clock,
+            req_position,
             req_nep,
             req_ndt,
             req_neg,
             req_shift,
             pending,
+            w_position,
             w_nep,
             w_ndt,
             w_high,
@@ -463,6 +515,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             phase,
             count,
             second,
+            publish,
             mul_on,
             mul_last,
             part_rem,
@@ -477,7 +530,11 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             out_n1,
             out_n2,
             out_n3,
+            out_position,
+            out_nep,
+            out_ndt,
             valid_reg,
+            have_reg,
             nep_less_one,
             ndt_plus_one,
             inc_r0,
@@ -634,6 +691,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
 
         self.valid_reg.d.next = false;
         if (self.state.q.val() == self.st_idle.val()) & self.pending.q.val() {
+            self.w_position.d.next = self.req_position.q.val();
             self.w_nep.d.next = self.req_nep.q.val();
             self.w_ndt.d.next = self.req_ndt.q.val();
             // 2·Ndt ≤ Nep ⇔ Ndt ≤ ⌊Nep/2⌋, at N bits.
@@ -651,7 +709,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.state.d.next = self.st_setup.val();
         }
         // Every other state lasts two cycles: its first only lets the adders' low halves
-        // take their (held) operands, its second acts.
+        // take their (held) operands, its second acts (FINISH: a third publishes).
         if self.state.q.val() != self.st_idle.val() {
             self.second.d.next = !self.second.q.val();
         }
@@ -702,14 +760,26 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
                 }
             }
         }
+        // FINISH: the rounding adder's sum stands from the second cycle on (its operands
+        // hold); the third writes the outputs, which are the core's output registers.
         if (self.state.q.val() == self.st_finish.val()) & self.second.q.val() {
+            self.publish.d.next = true;
+        }
+        if self.publish.q.val() {
             self.out_n1.d.next = self.stage_n1.q.val();
             self.out_n2.d.next = self.stage_n2.q.val();
             self.out_n3.d.next = self.rounded.val();
+            self.out_position.d.next = self.w_position.q.val();
+            self.out_nep.d.next = self.w_nep.q.val();
+            self.out_ndt.d.next = self.w_ndt.q.val();
             self.valid_reg.d.next = true;
+            self.have_reg.d.next = true;
+            self.publish.d.next = false;
+            self.second.d.next = false;
             self.state.d.next = self.st_idle.val();
         }
         if self.start.val() {
+            self.req_position.d.next = self.position.val();
             self.req_nep.d.next = self.nep.val();
             self.req_ndt.d.next = self.ndt.val();
             self.req_neg.d.next = self.negative.val();
@@ -720,16 +790,25 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.pending.d.next = false;
             self.mul_on.d.next = false;
             self.second.d.next = false;
+            self.publish.d.next = false;
             self.state.d.next = self.st_idle.val();
             self.valid_reg.d.next = false;
+            self.have_reg.d.next = false;
             self.out_n1.d.next = self.s_zero.val();
             self.out_n2.d.next = self.s_zero.val();
             self.out_n3.d.next = self.s_zero.val();
+            self.out_position.d.next = self.c_zero.val();
+            self.out_nep.d.next = self.n_zero.val();
+            self.out_ndt.d.next = self.n_zero.val();
         }
         self.speed_n1.next = self.out_n1.q.val();
         self.speed_n2.next = self.out_n2.q.val();
         self.speed_n3.next = self.out_n3.q.val();
+        self.speed_position.next = self.out_position.q.val();
+        self.speed_nep.next = self.out_nep.q.val();
+        self.speed_ndt.next = self.out_ndt.q.val();
         self.valid.next = self.valid_reg.q.val();
+        self.have_speeds.next = self.have_reg.q.val();
         self.busy.next = self.pending.q.val() | (self.state.q.val() != self.st_idle.val());
     }
 }

@@ -7,7 +7,7 @@
 //! enc_a ─ TwoFlopSync ─ GlitchFilter ─┐                      ┌─ PositionCounter ─ position, z_latch, index
 //! enc_b ─ TwoFlopSync ─ GlitchFilter ─┴─ QuadratureDecoder ──┤
 //! enc_z ─ TwoFlopSync ─ GlitchFilter ────────────────────────┘ (z)
-//!                          step, forward ─┬─ Timebase + SyncEstimator ─ nep, ndt ─ SpeedCalc ─ SpeedHold ─ speed_n1..n3
+//!                          step, forward ─┬─ Timebase + SyncEstimator ─ nep, ndt ─ SpeedCalc ─ speed_n1..n3
 //!                                         └─ PcCounter, EtTimer, MtCounter ─ BaselineSpeeds ─ speed_pc, speed_et, speed_mt
 //! ModeReset (registered cfg_mode and the registered reset: `reset` or a mode change),
 //! Startup (holds decoder and position counter through the filter delay), FaultFlags.
@@ -22,8 +22,6 @@ use crate::baselines::et_timer::EtTimer;
 use crate::baselines::mt_counter::MtCounter;
 use crate::baselines::pc_counter::PcCounter;
 use crate::estimator::speed_calc::SpeedCalc;
-use crate::estimator::speed_hold::SpeedHold;
-use crate::estimator::speed_tag::SpeedTag;
 use crate::estimator::sync_estimator::SyncEstimator;
 use crate::estimator::timebase::Timebase;
 use crate::frontend::glitch_filter::GlitchFilter;
@@ -144,16 +142,11 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     pub(crate) timebase: Timebase<N>,
     table1: SyncEstimator<N>,
     calc: SpeedCalc<N, F, P, S>,
-    tag: SpeedTag<N>,
-    tag_position: DFF<Bits<C>>,
-    tag_nep: DFF<Bits<N>>,
-    tag_ndt: DFF<Bits<N>>,
     window_last: DFF<Bits<C>>,
     restart_pos: DFF<Bits<C>>,
     position_before: DFF<Bits<C>>,
     restart_now: Signal<Local, Bits<C>>,
     window_now: Signal<Local, Bits<C>>,
-    hold: SpeedHold<S>,
     pc: PcCounter<N>,
     et: EtTimer<N>,
     mt: MtCounter<N>,
@@ -273,18 +266,11 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             timebase: Default::default(),
             table1: Default::default(),
             calc: Default::default(),
-            tag: SpeedTag::new(golden::estimator::speed_calc::latency_cycles(
-                N as u32, F as u32,
-            )),
-            tag_position: Default::default(),
-            tag_nep: Default::default(),
-            tag_ndt: Default::default(),
             window_last: Default::default(),
             restart_pos: Default::default(),
             position_before: Default::default(),
             restart_now: Default::default(),
             window_now: Default::default(),
-            hold: Default::default(),
             pc: Default::default(),
             et: Default::default(),
             mt: Default::default(),
@@ -338,7 +324,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
     fn update(&mut self) {
         clock!(
             self, clock, sync_a, sync_b, sync_z, startup, filter_a, filter_b, filter_z, decoder,
-            counter, timebase, table1, calc, tag, hold, pc, et, mt, baseline, faults, mode_reset
+            counter, timebase, table1, calc, pc, et, mt, baseline, faults, mode_reset
         );
         dff_setup!(
             self,
@@ -350,9 +336,6 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             filter_reg,
             z_mode_reg,
             cfg_error_reg,
-            tag_position,
-            tag_nep,
-            tag_ndt,
             window_last,
             restart_pos,
             position_before,
@@ -468,12 +451,11 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.calc.ndt.next = self.table1.ndt.val();
         self.calc.negative.next = !self.last_dir.q.val();
         self.calc.mode_shift.next = self.shift.val();
-        // What each speed was computed from, published with it (`SpeedTag`).
-        self.tag.reset.next = self.engine_reset.val();
-        self.tag.start.next = self.table1.update.val() & self.table1.primed.val();
-        // Span ends (golden::top::core::CoreOutputs::speed_position), from registered flags of
-        // Table 1 (reading its combinational ones here would close a combinational loop
-        // through this block): the restart pulse shows in `position` the edge after its
+        // What each speed was computed from, carried with the request and published with
+        // its speeds (`speed_position`, `speed_nep`, `speed_ndt`). Span ends
+        // (golden::top::core::CoreOutputs::speed_position), from registered flags of Table 1
+        // (reading its combinational ones here would close a combinational loop through
+        // this block): the restart pulse shows in `position` the edge after its
         // restart; the window's last pulse is `position` before the tick that wrote Nep1
         // (a pulse on that tick is not in the window), kept one edge in `position_before`.
         self.position_before.d.next = self.counter.position.val();
@@ -491,27 +473,10 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             self.window_last.d.next = 0.into();
             self.restart_pos.d.next = 0.into();
         }
-        self.tag.position.next = self.window_now.val();
+        self.calc.position.next = self.window_now.val();
         if self.table1.nep.val() == self.n_one.val() {
-            self.tag.position.next = self.restart_now.val();
+            self.calc.position.next = self.restart_now.val();
         }
-        self.tag.nep.next = self.table1.nep.val();
-        self.tag.ndt.next = self.table1.ndt.val();
-        if self.tag.valid.val() {
-            self.tag_position.d.next = self.tag.tag_position.val();
-            self.tag_nep.d.next = self.tag.tag_nep.val();
-            self.tag_ndt.d.next = self.tag.tag_ndt.val();
-        }
-        if self.engine_reset.val() {
-            self.tag_position.d.next = 0.into();
-            self.tag_nep.d.next = self.n_zero.val();
-            self.tag_ndt.d.next = self.n_zero.val();
-        }
-        self.hold.clear.next = self.engine_reset.val();
-        self.hold.load.next = self.calc.valid.val();
-        self.hold.n1_in.next = self.calc.speed_n1.val();
-        self.hold.n2_in.next = self.calc.speed_n2.val();
-        self.hold.n3_in.next = self.calc.speed_n3.val();
 
         // Baselines: PC, ET, M/T on the same steps, converted at each window end.
         self.pc.reset.next = self.rst.val();
@@ -561,17 +526,18 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.nep.next = self.table1.nep.val();
         self.ndt.next = self.table1.ndt.val();
         self.update.next = self.table1.update.val();
-        self.speed_n1.next = self.hold.n1.val();
-        self.speed_n2.next = self.hold.n2.val();
-        self.speed_n3.next = self.hold.n3.val();
-        self.speed_strobe.next = self.hold.strobe.val();
+        self.speed_n1.next = self.calc.speed_n1.val();
+        self.speed_n2.next = self.calc.speed_n2.val();
+        self.speed_n3.next = self.calc.speed_n3.val();
+        self.speed_strobe.next = self.calc.valid.val();
         self.speed_pc.next = self.baseline.speed_pc.val();
         self.speed_et.next = self.baseline.speed_et.val();
         self.speed_mt.next = self.baseline.speed_mt.val();
         self.baseline_strobe.next = self.baseline.valid.val();
         self.stalled.next = self.timebase.stalled.val();
-        self.valid.next =
-            self.hold.have_speed.val() & !self.timebase.stalled.val() & !self.cfg_error_reg.q.val();
+        self.valid.next = self.calc.have_speeds.val()
+            & !self.timebase.stalled.val()
+            & !self.cfg_error_reg.q.val();
         self.fault_illegal.next = self.faults.fault_illegal.val();
         self.fault_overspeed.next = self.faults.fault_overspeed.val();
         self.fault_revolution.next = self.faults.fault_revolution.val();
@@ -579,9 +545,9 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.glitch_count.next = self.faults.glitch_count.val();
         self.illegal_count.next = self.decoder.illegal_count.val();
         self.rev_error_count.next = self.counter.rev_error_count.val();
-        self.speed_position.next = self.tag_position.q.val();
-        self.speed_nep.next = self.tag_nep.q.val();
-        self.speed_ndt.next = self.tag_ndt.q.val();
+        self.speed_position.next = self.calc.speed_position.val();
+        self.speed_nep.next = self.calc.speed_nep.val();
+        self.speed_ndt.next = self.calc.speed_ndt.val();
         self.mt_strobe.next = self.mt.strobe.val();
         self.mt_m.next = self.mt.m.val();
         self.mt_t.next = self.mt.t.val();

@@ -7,4 +7,3 @@
 mod common;
 
 mod speed_calc;
-mod speed_tag;

@@ -2,7 +2,8 @@
 //! `SpeedCalc` against its bit-true model `golden::estimator::speed_calc::SpeedCalcModel`, every cycle:
 //! the rust-hdl simulation (direct drive) on proptest stimuli for N = 8, 16, 24, 32 and
 //! F = 0, 8, 16, 24 (random start timings, starts while busy, random resets, every mode
-//! shift), and the
+//! shift, random carried positions; every output compared, the request tag
+//! `speed_position`/`speed_nep`/`speed_ndt` and `have_speeds` included), and the
 //! emitted Verilog in Icarus Verilog (a self-checking bench written under `target/` at test
 //! time), because rust-hdl's simulator and its Verilog can disagree. The model computes the
 //! speeds exactly from the fractions (u128) and mode-scales them with a second rounding, so
@@ -13,7 +14,7 @@
 use crate::common;
 
 use golden::estimator::speed_calc::{
-    SpeedCalcInputs, SpeedCalcModel, SpeedCalcOutputs, SpeedFormat, Speeds,
+    RequestTag, SpeedCalcInputs, SpeedCalcModel, SpeedCalcOutputs, SpeedFormat, Speeds,
 };
 use hdl::{speed_calc_type, speed_calc_verilog, SpeedCalc};
 use proptest::prelude::*;
@@ -31,6 +32,7 @@ fn step<const N: usize, const F: usize, const P: usize, const S: usize>(
     uut.ndt.next = inp.ndt.into();
     uut.negative.next = inp.negative;
     uut.mode_shift.next = u64::from(inp.shift).into();
+    uut.position.next = inp.position.into();
     uut.clock.next = Clock { clk: false };
     assert!(simulate(uut, 100), "design did not settle");
     uut.clock.next = Clock { clk: true };
@@ -43,6 +45,12 @@ fn step<const N: usize, const F: usize, const P: usize, const S: usize>(
             n2: f.from_raw(uut.speed_n2.val().to_u64()),
             n3: f.from_raw(uut.speed_n3.val().to_u64()),
         },
+        tag: RequestTag {
+            position: uut.speed_position.val().to_u64(),
+            nep: uut.speed_nep.val().to_u64(),
+            ndt: uut.speed_ndt.val().to_u64(),
+        },
+        have_speeds: uut.have_speeds.val(),
     }
 }
 
@@ -56,6 +64,8 @@ struct Cycle {
     negative: bool,
     /// Mode shift 0..=3 (3 acts as 2).
     shift: u32,
+    /// The carried position (32 bits).
+    position: u32,
 }
 
 /// A counter value for any N up to 32, often a corner; [`inputs`] masks it to N bits (so
@@ -81,13 +91,15 @@ fn cycle() -> impl Strategy<Value = Cycle> {
         raw_counter(),
         any::<bool>(),
         0u32..4,
+        any::<u32>(),
     )
-        .prop_map(|(roll, nep, ndt, negative, shift)| Cycle {
+        .prop_map(|(roll, nep, ndt, negative, shift, position)| Cycle {
             roll,
             nep,
             ndt,
             negative,
             shift,
+            position,
         })
 }
 
@@ -106,6 +118,7 @@ fn inputs(f: SpeedFormat, rate: u16, c: &Cycle) -> SpeedCalcInputs {
         ndt: c.ndt & max,
         negative: c.negative,
         shift: c.shift,
+        position: u64::from(c.position),
     }
 }
 
@@ -194,6 +207,7 @@ fn back_to_back_starts_give_one_result_per_latency() {
             ndt: k as u64 % 5,
             negative: k.is_multiple_of(3),
             shift: (k % 4) as u32,
+            position: (k as u32).wrapping_mul(2_654_435_761),
         })
         .collect();
     assert_eq!(compare::<16, 8, 33, 25>(600, &cycles).unwrap(), 6);
@@ -207,16 +221,22 @@ const BENCH: &str = r#"module speed_calc_tb;
     reg reset = 1'b0, start = 1'b0, negative = 1'b0;
     reg [1:0] mode_shift = 2'd0;
     reg [`N-1:0] nep = 0, ndt = 0;
-    wire busy, valid;
+    reg [31:0] position = 0;
+    wire busy, valid, have_speeds;
     wire [`S-1:0] speed_n1, speed_n2, speed_n3;
-    reg e_reset, e_start, e_neg, e_busy, e_valid;
+    wire [31:0] speed_position;
+    wire [`N-1:0] speed_nep, speed_ndt;
+    reg e_reset, e_start, e_neg, e_busy, e_valid, e_have;
     reg [1:0] e_shift;
-    reg [`N-1:0] e_nep, e_ndt;
+    reg [`N-1:0] e_nep, e_ndt, e_tnep, e_tndt;
+    reg [31:0] e_pos, e_tpos;
     reg [`S-1:0] e_n1, e_n2, e_n3;
     integer fd, n, cycles, errors, valids;
     speed_calc uut(.clock(clock), .reset(reset), .start(start), .nep(nep), .ndt(ndt),
-        .negative(negative), .mode_shift(mode_shift), .speed_n1(speed_n1), .speed_n2(speed_n2),
-        .speed_n3(speed_n3), .valid(valid), .busy(busy));
+        .negative(negative), .mode_shift(mode_shift), .position(position),
+        .speed_n1(speed_n1), .speed_n2(speed_n2), .speed_n3(speed_n3),
+        .speed_position(speed_position), .speed_nep(speed_nep), .speed_ndt(speed_ndt),
+        .valid(valid), .have_speeds(have_speeds), .busy(busy));
     initial begin
         cycles = 0; errors = 0; valids = 0;
         fd = $fopen("vectors.txt", "r");
@@ -224,26 +244,31 @@ const BENCH: &str = r#"module speed_calc_tb;
             $display("RESULT FAIL cannot open vectors.txt");
             $finish;
         end
-        n = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h %h\n", e_reset, e_start, e_nep, e_ndt,
-            e_neg, e_shift, e_busy, e_valid, e_n1, e_n2, e_n3);
-        while (n == 11) begin
+        n = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h\n", e_reset, e_start,
+            e_nep, e_ndt, e_neg, e_shift, e_pos, e_busy, e_valid, e_n1, e_n2, e_n3, e_tpos,
+            e_tnep, e_tndt, e_have);
+        while (n == 16) begin
             reset = e_reset; start = e_start; nep = e_nep; ndt = e_ndt; negative = e_neg;
-            mode_shift = e_shift;
+            mode_shift = e_shift; position = e_pos;
             #5 clock = 1'b1;
             #1;
             if (busy !== e_busy || valid !== e_valid || speed_n1 !== e_n1
-                    || speed_n2 !== e_n2 || speed_n3 !== e_n3) begin
+                    || speed_n2 !== e_n2 || speed_n3 !== e_n3 || speed_position !== e_tpos
+                    || speed_nep !== e_tnep || speed_ndt !== e_tndt
+                    || have_speeds !== e_have) begin
                 if (errors < 10)
-                    $display("MISMATCH cycle %0d: got %b %b %h %h %h, want %b %b %h %h %h",
-                        cycles, busy, valid, speed_n1, speed_n2, speed_n3,
-                        e_busy, e_valid, e_n1, e_n2, e_n3);
+                    $display("MISMATCH cycle %0d: got %b %b %h %h %h %h %h %h %b, want %b %b %h %h %h %h %h %h %b",
+                        cycles, busy, valid, speed_n1, speed_n2, speed_n3, speed_position,
+                        speed_nep, speed_ndt, have_speeds, e_busy, e_valid, e_n1, e_n2, e_n3,
+                        e_tpos, e_tnep, e_tndt, e_have);
                 errors = errors + 1;
             end
             if (valid === 1'b1) valids = valids + 1;
             cycles = cycles + 1;
             #4 clock = 1'b0;
-            n = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h %h\n", e_reset, e_start, e_nep,
-                e_ndt, e_neg, e_shift, e_busy, e_valid, e_n1, e_n2, e_n3);
+            n = $fscanf(fd, "%h %h %h %h %h %h %h %h %h %h %h %h %h %h %h %h\n", e_reset,
+                e_start, e_nep, e_ndt, e_neg, e_shift, e_pos, e_busy, e_valid, e_n1, e_n2, e_n3,
+                e_tpos, e_tnep, e_tndt, e_have);
         end
         $fclose(fd);
         if (errors == 0 && cycles > 0)
@@ -291,6 +316,7 @@ fn icarus_equals_model<const N: usize, const F: usize, const P: usize, const S: 
             ndt: rng.counter(),
             negative: rng.next().is_multiple_of(2),
             shift: (rng.next() % 4) as u32,
+            position: rng.next() as u32,
         };
         let i = inputs(f, rate, &c);
         let o = model.step(i);
@@ -305,18 +331,23 @@ fn icarus_equals_model<const N: usize, const F: usize, const P: usize, const S: 
                 }),
         );
         vectors += &format!(
-            "{:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
+            "{:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x} {:x}\n",
             u8::from(i.reset),
             u8::from(i.start),
             i.nep,
             i.ndt,
             u8::from(i.negative),
             i.shift,
+            i.position,
             u8::from(o.busy),
             u8::from(o.valid),
             f.to_raw(o.speeds.n1),
             f.to_raw(o.speeds.n2),
-            f.to_raw(o.speeds.n3)
+            f.to_raw(o.speeds.n3),
+            o.tag.position,
+            o.tag.nep,
+            o.tag.ndt,
+            u8::from(o.have_speeds)
         );
     }
     assert!(negatives > results / 4, "the stimulus must cover reverse");

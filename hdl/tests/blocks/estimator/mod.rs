@@ -1,5 +1,4 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 mod speed_calc;
-mod speed_hold;
 mod sync_estimator;
 mod timebase;

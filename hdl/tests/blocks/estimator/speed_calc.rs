@@ -11,6 +11,7 @@ fn step(uut: &mut Calc, start: bool, nep: u64, ndt: u64, negative: bool) {
     uut.start.next = start;
     uut.nep.next = nep.into();
     uut.ndt.next = ndt.into();
+    uut.position.next = 0xDEAD_BEEFu64.into();
     uut.negative.next = negative;
     uut.clock.next = Clock { clk: false };
     assert!(simulate(uut, 100));
@@ -19,17 +20,21 @@ fn step(uut: &mut Calc, start: bool, nep: u64, ndt: u64, negative: bool) {
 }
 
 #[test]
-fn n3_of_4_over_1_by_hand_in_255_cycles() {
+fn n3_of_4_over_1_by_hand_in_256_cycles() {
     let mut uut = Calc::default();
     uut.connect_all();
     step(&mut uut, true, 4, 1, false);
-    // L = 1 + 3·(2 + 2·41) + 2 = 255: busy after edges 0 (the start) to 254, valid after
-    // edge 255.
-    for k in 1..=255 {
+    // L = 1 + 3·(2 + 2·41) + 3 = 256: busy after edges 0 (the start) to 255, valid after
+    // edge 256, with the request's tag.
+    for k in 1..=256 {
         assert!(uut.busy.val() && !uut.valid.val(), "after edge {}", k - 1);
+        assert!(!uut.have_speeds.val(), "after edge {}", k - 1);
         step(&mut uut, false, 0, 0, false);
     }
-    assert!(uut.valid.val() && !uut.busy.val());
+    assert!(uut.valid.val() && !uut.busy.val() && uut.have_speeds.val());
+    assert_eq!(uut.speed_position.val().to_u64(), 0xDEAD_BEEF);
+    assert_eq!(uut.speed_nep.val().to_u64(), 4);
+    assert_eq!(uut.speed_ndt.val().to_u64(), 1);
     // 4, 3 and 24/7 with 16 fractional bits: 262144, 196608, 224694.857… → 224695.
     assert_eq!(uut.speed_n1.val().to_u64(), 262_144);
     assert_eq!(uut.speed_n2.val().to_u64(), 196_608);
