@@ -586,9 +586,9 @@ impl Motion {
 /// edges later (synchroniser 2, filter max(L, 1), decoder 1) and restarts the estimator
 /// there; the next dt tick comes dt later and the first step after it (≤ one line) primes it
 /// with a restart; then 1 edge to the calculator's start and its latency 6(N + 17) + 10,
-/// whose last edge writes the speed registers: 2 + 3 + 2·max(L, 1) + 2·line + dt + L_calc
-/// + 1; and the core's reset acts one edge after the last edge that samples `reset`
-/// (reset_to_effect).
+/// whose last edge writes the speed registers: the sum is
+/// 2 + 3 + 2·max(L, 1) + 2·line + dt + L_calc + 1; and the core's reset acts one edge
+/// after the last edge that samples `reset` (reset_to_effect).
 fn valid_bound(p: &Params, filter: u64, hold: usize, dt: u64) -> u64 {
     let line = 4 * hold as u64;
     golden::top::ports::Latency::new(p, filter).reset_to_effect as u64
