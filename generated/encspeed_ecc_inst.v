@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 // encspeed_ecc_inst.v: instantiation template of encspeed_ecc (encspeed_ecc.v). Do not edit:
 // copy it into your design and rename the instance and the signals.
-// Generated for clock_hz = 100000000, lines = 1024, dt_cycles = 100000, counter_bits = 24, timeout_s = 1: see encspeed_ecc.toml for the latencies and the error budget.
+// Generated for clock_hz = 100000000, lines = 1024, dt_cycles = 100000, counter_bits = 24, timeout_s = 1, estimators = n1,n2,n3,pc,et,mt: see encspeed_ecc.toml for the latencies and the error budget.
 // enc_a, enc_b, enc_z may be asynchronous (synchronised inside by two flip-flops); every other port is synchronous to the rising edge of clock; reset is synchronous and active high.
 // cfg_* are sampled at every edge: tie them to constants or drive them from registers (0 on cfg_dt and cfg_timeout selects the generated defaults).
 encspeed_ecc u_encspeed_ecc (

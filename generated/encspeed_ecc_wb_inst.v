@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 // encspeed_ecc_wb_inst.v: instantiation template of encspeed_ecc_wb (encspeed_ecc_wb.v). Do not edit:
 // copy it into your design and rename the instance and the signals.
-// Generated for clock_hz = 100000000, lines = 1024, dt_cycles = 100000, counter_bits = 24, timeout_s = 1: see encspeed_ecc_wb.toml for the latencies and the error budget.
+// Generated for clock_hz = 100000000, lines = 1024, dt_cycles = 100000, counter_bits = 24, timeout_s = 1, estimators = n1,n2,n3,pc,et,mt: see encspeed_ecc_wb.toml for the latencies and the error budget.
 // enc_a, enc_b, enc_z may be asynchronous (synchronised inside by two flip-flops); every other port is synchronous to the rising edge of clock; reset is synchronous and active high.
 // The configuration is in registers: see encspeed_regs.h and docs/registers.md.
 encspeed_ecc_wb u_encspeed_ecc_wb (

@@ -309,13 +309,15 @@ fn bode_writes_csv_and_svg_and_refuses_bad_arguments() {
     }
 }
 
-/// One invalid value per `Spec` field: (field, its option, a value `Params::new` refuses).
-const INVALID: &[(&str, &str, &str)] = &[
-    ("clock_hz", "--clock-hz", "0"),
-    ("lines", "--lines", "0"),
-    ("dt_cycles", "--dt-cycles", "1"),
-    ("counter_bits", "--counter-bits", "7"),
-    ("timeout_s", "--timeout-s", "-1"),
+/// One invalid value per `Spec` field: (field, its option, a value `Params::new` refuses,
+/// the same value in a TOML file).
+const INVALID: &[(&str, &str, &str, &str)] = &[
+    ("clock_hz", "--clock-hz", "0", "0"),
+    ("lines", "--lines", "0", "0"),
+    ("dt_cycles", "--dt-cycles", "1", "1"),
+    ("counter_bits", "--counter-bits", "7", "7"),
+    ("timeout_s", "--timeout-s", "-1", "-1"),
+    ("estimators", "--estimators", "pc,mt", r#"["pc", "mt"]"#),
 ];
 
 fn spec_keys() -> Vec<String> {
@@ -360,7 +362,7 @@ fn every_spec_field_has_an_option_with_unit_range_and_default() {
         for opt in ["--config", "--print-config"] {
             assert!(help.contains(opt), "{cmd} --help lacks {opt}");
         }
-        for (key, opt, _) in INVALID {
+        for (key, opt, _, _) in INVALID {
             let line = help
                 .lines()
                 .find(|l| l.trim_start().starts_with(opt))
@@ -372,7 +374,7 @@ fn every_spec_field_has_an_option_with_unit_range_and_default() {
 
 #[test]
 fn invalid_option_of_every_field_exits_2_naming_it_and_writes_nothing() {
-    for (key, opt, value) in INVALID {
+    for (key, opt, value, _) in INVALID {
         let out = empty_dir(&format!("bad-option-{key}"));
         let o = encspeed(&["generate", "--out", out.to_str().unwrap(), opt, value]);
         let err = String::from_utf8_lossy(&o.stderr);
@@ -393,7 +395,7 @@ fn invalid_option_of_every_field_exits_2_naming_it_and_writes_nothing() {
 #[test]
 fn invalid_config_value_of_every_field_exits_2_naming_it_and_writes_nothing() {
     let dir = empty_dir("bad-config-values");
-    for (key, _, value) in INVALID {
+    for (key, _, _, value) in INVALID {
         let file = dir.join(format!("{key}.toml"));
         // TOML integers are taken for float fields too.
         std::fs::write(&file, format!("{key} = {value}\n")).unwrap();

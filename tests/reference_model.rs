@@ -21,6 +21,7 @@ fn spec() -> Spec {
         dt_cycles: 200,
         counter_bits: 16,
         timeout_s: 12.0 * 200.0 / 1e6,
+        ..Spec::default()
     }
 }
 

@@ -46,6 +46,54 @@ pub struct Spec {
     /// pulse has come for this long (rounded up to whole dt intervals). It is the value
     /// used while the `cfg_timeout` port is 0.
     pub timeout_s: f64,
+    /// The speed outputs the core computes ([`SpeedOutput`]); each one left out reads 0
+    /// and its hardware is not built. `n3` is always required.
+    pub estimators: Vec<SpeedOutput>,
+}
+
+/// A speed output of the core that a build may leave out (`estimators`): Rairán's n1, n2
+/// and n3 and the three baselines. n1, n2 and n3 come out of one calculator, so leaving
+/// out n1 or n2 only zeroes its port; leaving out `pc`, `et` or `mt` removes its counter,
+/// and leaving out all three removes the baselines' converter as well.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SpeedOutput {
+    /// n1 = Nep/Ndt (`speed_n1`).
+    N1,
+    /// n2, Rairán's eq. (6) (`speed_n2`).
+    N2,
+    /// n3, Rairán's eq. (11) (`speed_n3`): the synchronised estimator's result.
+    N3,
+    /// Pulse counting (`speed_pc`).
+    Pc,
+    /// Elapsed time (`speed_et`).
+    Et,
+    /// M/T (`speed_mt` and the `mt_*` outputs).
+    Mt,
+}
+
+impl SpeedOutput {
+    /// Every speed output, in port order.
+    pub const ALL: [SpeedOutput; 6] = [
+        SpeedOutput::N1,
+        SpeedOutput::N2,
+        SpeedOutput::N3,
+        SpeedOutput::Pc,
+        SpeedOutput::Et,
+        SpeedOutput::Mt,
+    ];
+
+    /// The name in `estimators` (`n1`, ..., `mt`).
+    pub fn name(self) -> &'static str {
+        match self {
+            SpeedOutput::N1 => "n1",
+            SpeedOutput::N2 => "n2",
+            SpeedOutput::N3 => "n3",
+            SpeedOutput::Pc => "pc",
+            SpeedOutput::Et => "et",
+            SpeedOutput::Mt => "mt",
+        }
+    }
 }
 
 impl Default for Spec {
@@ -58,6 +106,7 @@ impl Default for Spec {
             dt_cycles: 100_000,
             counter_bits: 24,
             timeout_s: 1.0,
+            estimators: SpeedOutput::ALL.to_vec(),
         }
     }
 }
@@ -89,6 +138,10 @@ pub enum ParamError {
     /// A sample time that is not a whole number of clock cycles ≥ [`MIN_DT_CYCLES`] below
     /// 2^31 ([`dt_cycles_for`]).
     DtNotWhole { ts_s: f64, clock_hz: f64 },
+    /// `estimators` does not name n3, or names an output twice.
+    Estimators(String),
+    /// The eccentricity tops need the M/T estimator ([`Params::check_ecc`]).
+    EccWithoutMt,
 }
 
 impl fmt::Display for ParamError {
@@ -150,6 +203,15 @@ impl fmt::Display for ParamError {
                 f,
                 "T_s = {ts_s} s at clock_hz = {clock_hz}: dt = T_s * clock_hz must be a whole \
                  number of cycles, {MIN_DT_CYCLES}..2^31"
+            ),
+            ParamError::Estimators(why) => write!(
+                f,
+                "estimators: {why} (choose from n1, n2, n3, pc, et, mt; n3 is required)"
+            ),
+            ParamError::EccWithoutMt => write!(
+                f,
+                "estimators: the eccentricity corrector corrects the M/T speed, so mt \
+                 must be one of the estimators"
             ),
         }
     }
@@ -217,7 +279,7 @@ impl From<Params> for Spec {
 
 impl Params {
     /// Validate a [`Spec`].
-    pub fn new(spec: Spec) -> Result<Params, ParamError> {
+    pub fn new(mut spec: Spec) -> Result<Params, ParamError> {
         if !(spec.clock_hz.is_finite() && spec.clock_hz > 0.0) {
             return Err(ParamError::ClockHz(spec.clock_hz));
         }
@@ -262,6 +324,23 @@ impl Params {
                 counter_bits: spec.counter_bits,
             });
         }
+        // Estimators: n3 required, none twice; kept in port order.
+        let mut estimators = spec.estimators.clone();
+        estimators.sort();
+        if let Some(w) = estimators.windows(2).find(|w| w[0] == w[1]) {
+            return Err(ParamError::Estimators(format!(
+                "{} named twice",
+                w[0].name()
+            )));
+        }
+        if !estimators.contains(&SpeedOutput::N3) {
+            return Err(ParamError::Estimators(
+                "n3 is missing: it is the synchronised estimator's result, which valid, \
+                 speed_strobe and the eccentricity corrector are defined on"
+                    .to_string(),
+            ));
+        }
+        spec.estimators = estimators;
         Ok(Params {
             spec,
             timeout_dt: timeout_dt as u64,
@@ -273,11 +352,46 @@ impl Params {
     /// The core and its Wishbone top take any `lines`.
     pub fn check_ecc(&self) -> Result<(), ParamError> {
         let k = self.spec.lines;
-        if (ECC_MIN_LINES..=ECC_MAX_LINES).contains(&k) && k.is_multiple_of(4) {
-            Ok(())
-        } else {
+        if !((ECC_MIN_LINES..=ECC_MAX_LINES).contains(&k) && k.is_multiple_of(4)) {
             Err(ParamError::EccLines(k))
+        } else if !self.has(SpeedOutput::Mt) {
+            Err(ParamError::EccWithoutMt)
+        } else {
+            Ok(())
         }
+    }
+
+    /// Whether the core computes speed output `e` (`estimators`); one left out reads 0.
+    pub fn has(&self, e: SpeedOutput) -> bool {
+        self.spec.estimators.contains(&e)
+    }
+
+    /// Whether any baseline (PC, ET, M/T) is built: if none is, neither is their converter.
+    pub fn has_baselines(&self) -> bool {
+        [SpeedOutput::Pc, SpeedOutput::Et, SpeedOutput::Mt]
+            .into_iter()
+            .any(|e| self.has(e))
+    }
+
+    /// The estimators built, as `--estimators` takes them (`n1,n2,n3,pc,et,mt`).
+    pub fn estimator_list(&self) -> String {
+        let names: Vec<&str> = self.spec.estimators.iter().map(|e| e.name()).collect();
+        names.join(",")
+    }
+
+    /// The parameters as the generated files' headers state them, one line.
+    pub fn summary(&self) -> String {
+        let s = &self.spec;
+        format!(
+            "clock_hz = {}, lines = {}, dt_cycles = {}, counter_bits = {}, timeout_s = {}, \
+             estimators = {}",
+            s.clock_hz,
+            s.lines,
+            s.dt_cycles,
+            s.counter_bits,
+            s.timeout_s,
+            self.estimator_list()
+        )
     }
 
     /// The specification these parameters were validated from.
@@ -430,6 +544,12 @@ mod tests {
             (with(|s| s.timeout_s = -1.0), "timeout_s"),
             (with(|s| s.timeout_s = 1e-4), "timeout_s"),
             (with(|s| s.timeout_s = 1e6), "timeout_s"),
+            (with(|s| s.estimators = vec![SpeedOutput::Mt]), "estimators"),
+            (with(|s| s.estimators = vec![]), "estimators"),
+            (
+                with(|s| s.estimators = vec![SpeedOutput::N3, SpeedOutput::Et, SpeedOutput::N3]),
+                "estimators",
+            ),
         ];
         for (r, name) in cases {
             let e = r.expect_err(name);
@@ -465,5 +585,40 @@ mod tests {
         assert_eq!(bits_for(255), 8);
         assert_eq!(bits_for(256), 9);
         assert_eq!(bits_for(0), 1);
+    }
+
+    #[test]
+    fn estimators_are_kept_in_port_order_and_read_back() {
+        use SpeedOutput::*;
+        let p = with(|s| s.estimators = vec![Mt, N3, Et]).unwrap();
+        assert_eq!(p.spec().estimators, [N3, Et, Mt]);
+        assert!(p.has(N3) && p.has(Et) && p.has(Mt));
+        assert!(!p.has(N1) && !p.has(N2) && !p.has(Pc));
+        assert!(p.has_baselines());
+        assert!(!with(|s| s.estimators = vec![N1, N3])
+            .unwrap()
+            .has_baselines());
+        // As a file names them; an unknown name is refused by the file's type.
+        let text = toml::to_string(p.spec()).unwrap();
+        assert!(
+            text.contains(r#"estimators = ["n3", "et", "mt"]"#),
+            "{text}"
+        );
+        let bad = text.replace(r#""et""#, r#""rpm""#);
+        assert!(toml::from_str::<Spec>(&bad).is_err());
+    }
+
+    #[test]
+    fn the_eccentricity_tops_need_mt() {
+        use SpeedOutput::*;
+        assert_eq!(
+            with(|s| s.estimators = vec![N3, Pc]).unwrap().check_ecc(),
+            Err(ParamError::EccWithoutMt)
+        );
+        assert_eq!(
+            with(|s| s.estimators = vec![N3, Mt]).unwrap().check_ecc(),
+            Ok(())
+        );
+        assert!(ParamError::EccWithoutMt.to_string().contains("estimators"));
     }
 }

@@ -3,7 +3,7 @@
 //! generated Markdown pages): the command that regenerates it, then the licence as an SPDX
 //! identifier, each in the file's comment syntax.
 
-use crate::params::Params;
+use crate::params::{Params, SpeedOutput};
 
 /// The licence of the repository and of every file it generates.
 pub const SPDX: &str = "SPDX-License-Identifier: MIT OR Apache-2.0";
@@ -28,10 +28,15 @@ pub enum Comment {
 /// explicitly so that it stays true whatever the defaults become.
 pub fn generate_command(p: &Params) -> String {
     let s = p.spec();
-    format!(
+    let mut command = format!(
         "encspeed generate --clock-hz {} --lines {} --dt-cycles {} --counter-bits {} --timeout-s {}",
         s.clock_hz, s.lines, s.dt_cycles, s.counter_bits, s.timeout_s
-    )
+    );
+    // Named only when some are left out, so that the default command stays short.
+    if s.estimators != SpeedOutput::ALL {
+        command.push_str(&format!(" --estimators {}", p.estimator_list()));
+    }
+    command
 }
 
 /// `Command: <command>` and the SPDX line, as comments of `comment`'s syntax.

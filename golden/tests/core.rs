@@ -23,6 +23,7 @@ fn params_dt(dt: u64) -> Params {
         dt_cycles: dt,
         counter_bits: 16,
         timeout_s: 50.0 * dt as f64 / 1e6,
+        ..Spec::default()
     })
     .unwrap()
 }

@@ -495,7 +495,7 @@ proptest! {
         pulses in prop::collection::vec(any::<u8>(), 50..3000),
     ) {
         let spec = Spec { dt_cycles: dt, counter_bits: 16, clock_hz: 1e6, lines: 1,
-            timeout_s: 60.0 * dt as f64 / 1e6 };
+            timeout_s: 60.0 * dt as f64 / 1e6, ..Spec::default() };
         let mut t = golden::estimator::sync_estimator::Table1::new(&Params::new(spec).unwrap());
         let mut updates: Vec<u64> = vec![];
         for (k, &p) in pulses.iter().enumerate() {

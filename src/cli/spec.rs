@@ -59,6 +59,13 @@ fn describe(key: &str) -> Option<(&'static str, &'static str, String)> {
             "S",
             "Zero-speed timeout, s; at least one dt, under 2^counter_bits - 1 dt".to_string(),
         ),
+        "estimators" => (
+            "estimators",
+            "LIST",
+            "Speed outputs to build, comma-separated, of n1,n2,n3,pc,et,mt; n3 is required, \
+             one left out reads 0 and its hardware is not built"
+                .to_string(),
+        ),
         _ => return None,
     })
 }
@@ -76,10 +83,16 @@ fn spec_keys() -> Vec<String> {
         .collect()
 }
 
-/// A value as the help text shows it: `100000000`, not `100000000.0`.
+/// A value as the help text shows it: `100000000`, not `100000000.0`; a list as the
+/// option takes it, `n1,n2`.
 fn show(v: &toml::Value) -> String {
     match v {
         toml::Value::Float(f) => f.to_string(),
+        toml::Value::Array(items) => items
+            .iter()
+            .map(|i| i.as_str().map_or_else(|| i.to_string(), str::to_string))
+            .collect::<Vec<_>>()
+            .join(","),
         other => other.to_string(),
     }
 }
@@ -125,9 +138,16 @@ impl Args for SpecArgs {
                 continue;
             };
             let float = default.is_float();
+            let list = default.is_array();
             let field = key.clone();
             let parse = move |s: &str| -> Result<toml::Value, String> {
-                let v = if float {
+                let v = if list {
+                    Ok(toml::Value::Array(
+                        s.split(',')
+                            .map(|item| toml::Value::String(item.trim().to_string()))
+                            .collect(),
+                    ))
+                } else if float {
                     s.parse::<f64>()
                         .map(toml::Value::Float)
                         .map_err(|e| e.to_string())
@@ -289,6 +309,37 @@ mod tests {
     fn printed_config_is_a_spec() {
         let text = config_toml(&Spec::default());
         assert_eq!(toml::from_str::<Spec>(&text).unwrap(), Spec::default());
+    }
+
+    #[test]
+    fn a_list_option_is_comma_separated_and_checked_against_its_field() {
+        use clap::FromArgMatches;
+        let cmd = SpecArgs::augment_args(clap::Command::new("t"));
+        let m = cmd
+            .clone()
+            .try_get_matches_from(["t", "--estimators", "mt, n3"])
+            .unwrap();
+        let args = SpecArgs::from_arg_matches(&m).unwrap();
+        let p = args.params().unwrap();
+        use golden::params::SpeedOutput::{Mt, N3};
+        assert_eq!(p.spec().estimators, [N3, Mt]);
+        let e = cmd
+            .clone()
+            .try_get_matches_from(["t", "--estimators", "n3,rpm"])
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("rpm"), "{e}");
+        let m = cmd
+            .try_get_matches_from(["t", "--estimators", "pc,et"])
+            .unwrap();
+        let e = SpecArgs::from_arg_matches(&m)
+            .unwrap()
+            .params()
+            .unwrap_err();
+        assert!(
+            e.contains("n3 is missing") && e.contains("--estimators"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -329,7 +329,8 @@ fn markdown(p: &Params, rows: &[Row]) -> String {
     let mut m = String::new();
     let _ = writeln!(
         m,
-        "Written by `encspeed synth` for {} lines, {}-bit counters, dt {} cycles, clock {mhz} MHz.\n\
+        "Written by `encspeed synth` for {} lines, {}-bit counters, dt {} cycles, clock {mhz} MHz, \
+         estimators {}.\n\
          Tools: {}.\n\n\
          Cells: yosys `synth_ice40` (`-dsp` on the UP5K) or `synth_ecp5` of the top alone. Logic\n\
          cells and Fmax: nextpnr of the top inside the boundary wrapper (every port registered),\n\
@@ -340,6 +341,7 @@ fn markdown(p: &Params, rows: &[Row]) -> String {
         p.lines(),
         p.counter_bits(),
         p.dt_cycles(),
+        p.estimator_list(),
         tools.join("; "),
     );
     m += "| top | device | LUT4 | flip-flops | carry | BRAM | DSP | logic cells | Fmax, MHz | meets clock | critical path (slowest seed) |\n";

@@ -102,6 +102,7 @@ impl Setup {
             dt_cycles: self.dt_cycles,
             counter_bits: self.counter_bits,
             timeout_s: TIMEOUT_S,
+            ..Spec::default()
         })
         .expect("the accuracy setup is a legal parameter set")
     }

@@ -36,6 +36,7 @@ pub fn params8() -> Params {
         dt_cycles: 20,
         counter_bits: 8,
         timeout_s: 12.0 * 20.0 / 1e6,
+        ..Spec::default()
     })
     .expect("valid 8-bit test parameters")
 }
@@ -48,6 +49,7 @@ pub fn params12() -> Params {
         dt_cycles: 100,
         counter_bits: 12,
         timeout_s: 10.0 * 100.0 / 1e6,
+        ..Spec::default()
     })
     .expect("valid 12-bit test parameters")
 }
@@ -60,6 +62,7 @@ pub fn params16() -> Params {
         dt_cycles: 200,
         counter_bits: 16,
         timeout_s: 12.0 * 200.0 / 1e6,
+        ..Spec::default()
     })
     .expect("valid 16-bit test parameters")
 }

@@ -27,6 +27,7 @@ fn small_params() -> Params {
         dt_cycles: 200,
         clock_hz: 1e6,
         timeout_s: 0.1,
+        ..Spec::default()
     })
     .unwrap()
 }

@@ -14,7 +14,9 @@
 //!   speeds, dt, phases and modes;
 //! - the shipped `generated/encspeed_core.v` (default parameters, 24-bit counters) on
 //!   adversarial waveforms, in Verilator against the golden model;
-//! - one long run that saturates the three error counters.
+//! - one long run that saturates the three error counters;
+//! - cores built with estimators left out (`estimators`): the full core's outputs with
+//!   those at 0, in every layer.
 //!
 //! Each property prints its number of cases, of simulated cycles and its run time (run with
 //! `--nocapture`). The case counts are tuned so that the whole file runs in under 3 minutes
@@ -24,8 +26,8 @@
 //! with other jobs): 1,501 cases and 3.6 M cycles in 95 s with the builds cached, about
 //! 125 s from a cold cache.
 
-use golden::params::{Params, Spec};
-use golden::top::core::CoreInputs;
+use golden::params::{Params, Spec, SpeedOutput};
+use golden::top::core::{CoreInputs, CoreOutputs};
 use proptest::prelude::*;
 use proptest::test_runner::{FileFailurePersistence, TestRunner};
 use std::cell::Cell;
@@ -141,6 +143,81 @@ fn adversarial_on(name: &str, p: &Params, v: &'static OnceLock<Verilated>, n: u3
 #[test]
 fn adversarial_8bit_is_bit_exact() {
     adversarial_on("adversarial 8-bit", &params8(), &V8, 300, 3000);
+}
+
+static V8_N2_N3_ET: OnceLock<Verilated> = OnceLock::new();
+static V8_N3: OnceLock<Verilated> = OnceLock::new();
+
+/// `full` (the outputs of the core with every estimator) as the core built with only
+/// `keep` must show them: each speed output left out reads 0 (with M/T its `mt_*`
+/// outputs, and `baseline_strobe` with all three baselines), every other output unchanged.
+fn left_out(full: &CoreOutputs, keep: &[SpeedOutput]) -> CoreOutputs {
+    use SpeedOutput::*;
+    let mut o = *full;
+    let has = |e| keep.contains(&e);
+    if !has(N1) {
+        o.speed_n1 = 0;
+    }
+    if !has(N2) {
+        o.speed_n2 = 0;
+    }
+    if !has(Pc) {
+        o.speed_pc = 0;
+    }
+    if !has(Et) {
+        o.speed_et = 0;
+    }
+    if !has(Mt) {
+        (o.speed_mt, o.mt_strobe, o.mt_m, o.mt_t, o.mt_negative) = (0, false, 0, 0, false);
+    }
+    if !(has(Pc) || has(Et) || has(Mt)) {
+        o.baseline_strobe = false;
+    }
+    o
+}
+
+/// A core built with some estimators left out (`estimators`), on adversarial waveforms:
+/// its golden model is the full core's with those outputs at 0, and rust-hdl and the
+/// emitted Verilog (Verilator) equal it cycle for cycle.
+fn estimators_on(name: &str, keep: &[SpeedOutput], v: &'static OnceLock<Verilated>) {
+    let full = params8();
+    let p = Params::new(Spec {
+        estimators: keep.to_vec(),
+        ..full.spec().clone()
+    })
+    .unwrap();
+    let knobs = Knobs::for_params(&p, 3000);
+    let v = verilated(v, &p);
+    let strobes = Cell::new(0u64);
+    let modes = property(name, 60, cases(knobs, 48), |case| {
+        let inputs = case.inputs();
+        let expected: Vec<CoreOutputs> = run_golden(&full, &inputs)
+            .iter()
+            .map(|o| left_out(o, keep))
+            .collect();
+        assert_same(
+            "golden (left out)",
+            &inputs,
+            &expected,
+            &run_golden(&p, &inputs),
+        );
+        strobes.set(strobes.get() + expected.iter().filter(|o| o.speed_strobe).count() as u64);
+        check_all_layers(&p, v, &inputs);
+        (inputs.len(), modes_used(&inputs))
+    });
+    assert_eq!(modes, 0b1111, "{name}: every cfg_mode must be exercised");
+    assert!(
+        strobes.get() > 100,
+        "{name}: too few speeds computed ({})",
+        strobes.get()
+    );
+}
+
+#[test]
+fn estimators_left_out_read_zero_in_every_layer() {
+    use SpeedOutput::*;
+    estimators_on("estimators n2,n3,et (8-bit)", &[N2, N3, Et], &V8_N2_N3_ET);
+    estimators_on("estimators n3 (8-bit)", &[N3], &V8_N3);
 }
 
 #[test]

@@ -16,6 +16,7 @@ fn test_params() -> Params {
         dt_cycles: 200,
         counter_bits: 16,
         timeout_s: 12.0 * 200.0 / 1e6,
+        ..Spec::default()
     })
     .unwrap()
 }

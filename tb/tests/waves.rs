@@ -22,6 +22,7 @@ fn vcd_holds_ports_and_internal_counters_of_every_cycle() {
         dt_cycles: 50,
         counter_bits: 12,
         timeout_s: 8.0 * 50.0 / 1e6,
+        ..Spec::default()
     })
     .unwrap();
     let inputs = tb::scenarios::find("speed-steps")

@@ -155,6 +155,7 @@ mod tests {
             dt_cycles: dt,
             counter_bits: 8,
             timeout_s: 10.0 * dt as f64 / 1e6,
+            ..Spec::default()
         })
         .unwrap()
     }

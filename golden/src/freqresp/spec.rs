@@ -433,6 +433,7 @@ pub(crate) fn core_params(spec: &BodeSpec, te_max_s: f64) -> Result<(Params, u64
         dt_cycles: dt,
         counter_bits: bits,
         timeout_s: timeout_dt as f64 * dt as f64 / spec.clock_hz,
+        ..Spec::default()
     })
     .map_err(FreqRespError::Core)?;
     Ok((p, dt))

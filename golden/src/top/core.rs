@@ -70,6 +70,12 @@
 //! - **valid** = a speed has been computed since reset or the last reversal, the shaft has
 //!   moved within the timeout (`stalled` low) and the configuration is legal. Sticky faults
 //!   do not clear it; they are reported beside it.
+//! - **Estimators left out** (`estimators`, [`SpeedOutput`]): a speed output that is not
+//!   built reads 0 at every cycle (`speed_n1`, `speed_n2`, `speed_pc`, `speed_et`,
+//!   `speed_mt`; without M/T also `mt_strobe`, `mt_m`, `mt_t`, `mt_negative`), and
+//!   `baseline_strobe` stays low when none of PC, ET and M/T is built. Every other output is
+//!   that of the full core, cycle for cycle: the built estimators' timing does not depend on
+//!   the others.
 
 use crate::baselines::baseline_speeds::{
     BaselineFormat, BaselineRequest, BaselineSpeedsInputs, BaselineSpeedsModel,
@@ -84,7 +90,8 @@ use crate::frontend::{
     QuadratureDecoder, MODE_INVALID, MODE_X1, MODE_X2,
 };
 use crate::params::{
-    max_value, Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
+    max_value, Params, SpeedOutput, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS,
+    SPEED_FRAC_BITS,
 };
 use crate::top::mode_reset::ModeReset;
 use crate::top::port_fields::port_struct;
@@ -246,6 +253,10 @@ pub struct CoreModel {
     mt: MtCounter,
     et_have: bool,
     baseline: BaselineSpeedsModel,
+    /// The speed outputs built (`estimators`); the others read 0.
+    estimators: Vec<SpeedOutput>,
+    /// At least one of PC, ET, M/T is built (else so is not their converter).
+    has_baselines: bool,
 }
 
 /// Index of the channels in [`CoreModel`]'s arrays.
@@ -294,6 +305,17 @@ impl CoreModel {
                 BaselineFormat::new(p.counter_bits(), SPEED_FRAC_BITS)
                     .expect("validated parameters give a legal baseline format"),
             ),
+            estimators: p.spec().estimators.clone(),
+            has_baselines: p.has_baselines(),
+        }
+    }
+
+    /// `v` if speed output `e` is built, else 0 (its port is tied low).
+    fn built<T: Default>(&self, e: SpeedOutput, v: T) -> T {
+        if self.estimators.contains(&e) {
+            v
+        } else {
+            T::default()
         }
     }
 
@@ -517,14 +539,15 @@ impl CoreModel {
             nep: t1.nep,
             ndt: t1.ndt,
             update: t1.update,
-            speed_n1: calc.speeds.n1,
-            speed_n2: calc.speeds.n2,
+            speed_n1: self.built(SpeedOutput::N1, calc.speeds.n1),
+            speed_n2: self.built(SpeedOutput::N2, calc.speeds.n2),
             speed_n3: calc.speeds.n3,
             speed_strobe: calc.valid,
-            speed_pc: self.baseline.outputs().speeds.pc,
-            speed_et: self.baseline.outputs().speeds.et,
-            speed_mt: self.baseline.outputs().speeds.mt,
-            baseline_strobe: self.baseline.outputs().valid,
+            speed_pc: self.built(SpeedOutput::Pc, self.baseline.outputs().speeds.pc),
+            speed_et: self.built(SpeedOutput::Et, self.baseline.outputs().speeds.et),
+            speed_mt: self.built(SpeedOutput::Mt, self.baseline.outputs().speeds.mt),
+            // No converter without a baseline.
+            baseline_strobe: self.baseline.outputs().valid && self.has_baselines,
             valid: calc.have_speeds && !stalled && !self.cfg_error,
             stalled,
             fault_illegal: self.faults[0],
@@ -537,10 +560,10 @@ impl CoreModel {
             speed_position: calc.tag.position,
             speed_nep: calc.tag.nep,
             speed_ndt: calc.tag.ndt,
-            mt_strobe: self.mt.outputs().strobe,
-            mt_m: self.mt.outputs().m,
-            mt_t: self.mt.outputs().t,
-            mt_negative: self.mt.outputs().negative,
+            mt_strobe: self.built(SpeedOutput::Mt, self.mt.outputs().strobe),
+            mt_m: self.built(SpeedOutput::Mt, self.mt.outputs().m),
+            mt_t: self.built(SpeedOutput::Mt, self.mt.outputs().t),
+            mt_negative: self.built(SpeedOutput::Mt, self.mt.outputs().negative),
             dt_active: self.dt_reg,
         }
     }

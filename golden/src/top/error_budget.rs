@@ -9,7 +9,7 @@
 use crate::estimator::bounds::{estimator_bound, Estimator};
 use crate::estimator::speed_calc::mode_scale_error_lsb;
 use crate::estimator::speed_calc::speed_lsb_error;
-use crate::params::Params;
+use crate::params::{Params, SpeedOutput};
 use serde::Serialize;
 
 /// The bound on the relative error of `est`'s output at a constant r lines per dt, decoding
@@ -40,16 +40,20 @@ pub struct BudgetRow {
     pub lines_per_dt: f64,
     /// Decoder steps per dt.
     pub steps_per_dt: f64,
-    /// `speed_pc`.
-    pub pc: f64,
-    /// `speed_et`.
-    pub et: f64,
-    /// `speed_n1`.
-    pub n1: f64,
+    /// `speed_pc`; absent when it is left out (`estimators`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pc: Option<f64>,
+    /// `speed_et`; absent when it is left out (`estimators`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub et: Option<f64>,
+    /// `speed_n1`; absent when it is left out (`estimators`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub n1: Option<f64>,
     /// `speed_n3` (Rairán eq. (13) with one clock and the rounding).
     pub n3: f64,
-    /// `speed_mt`.
-    pub mt: f64,
+    /// `speed_mt`; absent when it is left out (`estimators`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mt: Option<f64>,
 }
 
 /// Speeds of the budget table, r/min: decades.
@@ -76,16 +80,17 @@ pub fn budget(p: &Params) -> Vec<BudgetRow> {
                 continue;
             }
             let b = |est| output_bound(est, r, shift, dt, p.speed_frac_bits());
+            let built = |e: SpeedOutput, est| p.has(e).then(|| b(est));
             rows.push(BudgetRow {
                 mode,
                 rev_per_min: rpm,
                 lines_per_dt: r,
                 steps_per_dt: rs,
-                pc: b(Estimator::Pc),
-                et: b(Estimator::Et),
-                n1: b(Estimator::N1),
+                pc: built(SpeedOutput::Pc, Estimator::Pc),
+                et: built(SpeedOutput::Et, Estimator::Et),
+                n1: built(SpeedOutput::N1, Estimator::N1),
                 n3: b(Estimator::N3),
-                mt: b(Estimator::Mt),
+                mt: built(SpeedOutput::Mt, Estimator::Mt),
             });
         }
     }
@@ -112,7 +117,7 @@ mod tests {
             .find(|r| r.mode == "x4" && r.rev_per_min == 1000.0)
             .unwrap();
         assert!((row.lines_per_dt - 17.066_666_666_666_67).abs() < 1e-12);
-        assert!((row.pc - 1.0 / 68.266_666_666_666_67).abs() < 1e-12);
+        assert!((row.pc.unwrap() - 1.0 / 68.266_666_666_666_67).abs() < 1e-12);
         let n3 =
             1.0 / 137.0 + (1.0 + 1.0 / 137.0) / 99_999.0 + 0.625 / 65_536.0 / 17.066_666_666_666_67;
         assert!((row.n3 - n3).abs() < 1e-15, "{} vs {n3}", row.n3);
@@ -125,5 +130,24 @@ mod tests {
             |mode: &str, rpm: f64| rows.iter().any(|r| r.mode == mode && r.rev_per_min == rpm);
         assert!(!has("x1", 0.1) && !has("x2", 0.1) && has("x4", 0.1));
         assert!(has("x4", 100_000.0));
+    }
+
+    /// A speed output left out has no budget; the others keep theirs.
+    #[test]
+    fn outputs_left_out_have_no_budget() {
+        use crate::params::SpeedOutput::{Mt, N3};
+        let full = budget(&Params::new(Spec::default()).unwrap());
+        let p = Params::new(Spec {
+            estimators: vec![N3, Mt],
+            ..Spec::default()
+        })
+        .unwrap();
+        let some = budget(&p);
+        assert_eq!(some.len(), full.len());
+        for (s, f) in some.iter().zip(&full) {
+            assert_eq!((s.pc, s.et, s.n1), (None, None, None));
+            assert_eq!((s.n3, s.mt), (f.n3, f.mt));
+            assert!(f.pc.is_some() && f.et.is_some() && f.n1.is_some());
+        }
     }
 }

@@ -244,6 +244,7 @@ mod tests {
             dt_cycles: 200,
             counter_bits: 12,
             timeout_s: 20.0 * 200.0 / 1e6,
+            ..Spec::default()
         })
         .unwrap()
     }

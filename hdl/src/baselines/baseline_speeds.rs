@@ -302,6 +302,10 @@ pub struct BaselineSpeeds<const N: usize, const F: usize, const S: usize> {
     /// carry chain: the increment is bit 0 with this one register, one LUT with the sign
     /// (three LUT levels before, the core's critical path on two of three HX8K seeds).
     round_enable: DFF<Bit>,
+    /// The next values of `sel_zero` and `sel_sat` (the flags of the division `phase`
+    /// selects), which `round_enable` reads too.
+    zero_next: Signal<Local, Bit>,
+    sat_next: Signal<Local, Bit>,
     /// Quotient >> 1 (or a special value).
     half: Signal<Local, Bits<S>>,
     /// Quotient bit 0: the rounding increment.
@@ -442,6 +446,8 @@ impl<const N: usize, const F: usize, const S: usize> Default for BaselineSpeeds<
             sel_zero: Default::default(),
             sel_sat: Default::default(),
             round_enable: Default::default(),
+            zero_next: Default::default(),
+            sat_next: Default::default(),
             half: Default::default(),
             round_bit: Default::default(),
             addend: Default::default(),
@@ -632,25 +638,21 @@ impl<const N: usize, const F: usize, const S: usize> Logic for BaselineSpeeds<N,
         // format: r is dropped (h is then the maximum). Saturation: h = max, r = 0; zero:
         // h = 0, r = 0.
         self.sel_neg.d.next = self.w_et_neg.q.val();
-        self.sel_zero.d.next = self.w_et_zero.q.val();
-        self.sel_sat.d.next = false;
+        self.zero_next.next = self.w_et_zero.q.val();
+        self.sat_next.next = false;
         if self.phase.q.val() {
             self.sel_neg.d.next = self.w_mt_neg.q.val();
-            self.sel_zero.d.next = self.w_mt_zero.q.val();
-            self.sel_sat.d.next = self.w_mt_sat.q.val();
+            self.zero_next.next = self.w_mt_zero.q.val();
+            self.sat_next.next = self.w_mt_sat.q.val();
         }
+        self.sel_zero.d.next = self.zero_next.val();
+        self.sel_sat.d.next = self.sat_next.val();
         self.half.next = self.dq.q.val() >> self.sh_one.val();
-        // q all ones is bit 0 and the bits above it: r & ¬(all ones) = r & ¬(bits above);
-        // with the next values of sel_sat and sel_zero as assigned above.
+        // q all ones is bit 0 and the bits above it: r & ¬(all ones) = r & ¬(bits above).
         self.round_enable.d.next = ((self.dq.q.val() & self.s_low_bits.val())
             != self.s_low_bits.val())
-            & !self.w_et_zero.q.val();
-        if self.phase.q.val() {
-            self.round_enable.d.next = ((self.dq.q.val() & self.s_low_bits.val())
-                != self.s_low_bits.val())
-                & !self.w_mt_zero.q.val()
-                & !self.w_mt_sat.q.val();
-        }
+            & !self.zero_next.val()
+            & !self.sat_next.val();
         self.round_bit.next =
             ((self.dq.q.val() & self.s_one.val()) != self.s_zero.val()) & self.round_enable.q.val();
         if self.sel_sat.q.val() {

@@ -122,12 +122,8 @@ impl Top {
     fn connect_notes(self, p: &Params) -> Vec<String> {
         let mut notes = vec![
             format!(
-                "Generated for clock_hz = {}, lines = {}, dt_cycles = {}, counter_bits = {}, timeout_s = {}: see {}.toml for the latencies and the error budget.",
-                p.clock_hz(),
-                p.lines(),
-                p.dt_cycles(),
-                p.counter_bits(),
-                p.spec().timeout_s,
+                "Generated for {}: see {}.toml for the latencies and the error budget.",
+                p.summary(),
                 self.module()
             ),
             "enc_a, enc_b, enc_z may be asynchronous (synchronised inside by two flip-flops); every other port is synchronous to the rising edge of clock; reset is synchronous and active high.".into(),

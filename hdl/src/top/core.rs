@@ -32,7 +32,8 @@ use crate::frontend::two_flop_sync::TwoFlopSync;
 use crate::top::fault_flags::FaultFlags;
 use crate::top::mode_reset::ModeReset;
 use golden::params::{
-    Params, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS, SPEED_FRAC_BITS,
+    Params, SpeedOutput, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS,
+    SPEED_FRAC_BITS,
 };
 use rust_hdl::prelude::*;
 
@@ -196,6 +197,16 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     limit_less_two_x1: Constant<Bits<C>>,
     limit_less_two_x2: Constant<Bits<C>>,
     limit_less_two_x4: Constant<Bits<C>>,
+    /// Which speed outputs are built (`estimators`): a constant, so that synthesis removes
+    /// the blocks of one left out, whose port is tied to 0 (`speed_zero`, `n_zero`).
+    has_n1: Constant<Bit>,
+    has_n2: Constant<Bit>,
+    has_pc: Constant<Bit>,
+    has_et: Constant<Bit>,
+    has_mt: Constant<Bit>,
+    /// At least one of PC, ET, M/T: else their converter is not built either.
+    has_baselines: Constant<Bit>,
+    speed_zero: Constant<Bits<S>>,
 }
 
 impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
@@ -315,6 +326,13 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             limit_less_two_x1: Constant::new(limits(0).2),
             limit_less_two_x2: Constant::new(limits(1).2),
             limit_less_two_x4: Constant::new(limits(2).2),
+            has_n1: Constant::new(p.has(SpeedOutput::N1)),
+            has_n2: Constant::new(p.has(SpeedOutput::N2)),
+            has_pc: Constant::new(p.has(SpeedOutput::Pc)),
+            has_et: Constant::new(p.has(SpeedOutput::Et)),
+            has_mt: Constant::new(p.has(SpeedOutput::Mt)),
+            has_baselines: Constant::new(p.has_baselines()),
+            speed_zero: Constant::new(0.into()),
         }
     }
 }
@@ -508,6 +526,24 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.baseline.mt_negative.next = self.mt.negative.val();
         self.baseline.cfg_dt.next = self.dt_reg.q.val();
         self.baseline.mode_shift.next = self.shift.val();
+        // Estimators left out: their inputs to the converter are 0 (its results for them
+        // are not used), so that nothing reads their counters and synthesis removes them.
+        if !self.has_pc.val() {
+            self.baseline.pc_count.next = self.n_zero.val();
+        }
+        if !self.has_et.val() {
+            self.baseline.et_period.next = self.n_zero.val();
+            self.baseline.et_negative.next = false;
+            self.baseline.et_valid.next = false;
+        }
+        if !self.has_mt.val() {
+            self.baseline.mt_m.next = self.n_zero.val();
+            self.baseline.mt_t.next = self.n_zero.val();
+            self.baseline.mt_negative.next = false;
+        }
+        if !self.has_baselines.val() {
+            self.baseline.start.next = false;
+        }
 
         // Faults.
         self.faults.reset.next = self.rst.val();
@@ -553,5 +589,28 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.mt_t.next = self.mt.t.val();
         self.mt_negative.next = self.mt.negative.val();
         self.dt_active.next = self.dt_reg.q.val();
+        // Speed outputs left out read 0 (CoreModel's rule).
+        if !self.has_n1.val() {
+            self.speed_n1.next = self.speed_zero.val();
+        }
+        if !self.has_n2.val() {
+            self.speed_n2.next = self.speed_zero.val();
+        }
+        if !self.has_pc.val() {
+            self.speed_pc.next = self.speed_zero.val();
+        }
+        if !self.has_et.val() {
+            self.speed_et.next = self.speed_zero.val();
+        }
+        if !self.has_mt.val() {
+            self.speed_mt.next = self.speed_zero.val();
+            self.mt_strobe.next = false;
+            self.mt_m.next = self.n_zero.val();
+            self.mt_t.next = self.n_zero.val();
+            self.mt_negative.next = false;
+        }
+        if !self.has_baselines.val() {
+            self.baseline_strobe.next = false;
+        }
     }
 }

@@ -27,6 +27,7 @@ fn params(lines: u32) -> Params {
         dt_cycles: 200,
         counter_bits: 12,
         timeout_s: 0.05,
+        ..Spec::default()
     })
     .unwrap()
 }

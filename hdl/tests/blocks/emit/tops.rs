@@ -16,6 +16,7 @@ fn files_are_named_after_their_modules() {
         dt_cycles: 200,
         clock_hz: 1e6,
         timeout_s: 0.1,
+        ..Spec::default()
     })
     .unwrap();
     for top in Top::ALL {
@@ -34,6 +35,7 @@ fn files_are_named_after_their_modules() {
         dt_cycles: 200,
         clock_hz: 1e6,
         timeout_s: 0.1,
+        ..Spec::default()
     })
     .unwrap();
     for top in Top::ALL {

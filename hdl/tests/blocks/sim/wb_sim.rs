@@ -13,6 +13,7 @@ fn small() -> Params {
         dt_cycles: 200,
         counter_bits: 12,
         timeout_s: 20.0 * 200.0 / 1e6,
+        ..Spec::default()
     })
     .unwrap()
 }
