@@ -96,6 +96,32 @@ impl SpeedOutput {
     }
 }
 
+/// Which speed outputs a build computes, as a small `Copy` set (one flag per
+/// [`SpeedOutput`]): what the core model and the HDL constructor ask on every use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EstimatorSet([bool; 6]);
+
+impl EstimatorSet {
+    /// The set of the outputs listed.
+    pub fn of(list: &[SpeedOutput]) -> EstimatorSet {
+        let mut flags = [false; 6];
+        for &e in list {
+            flags[e as usize] = true;
+        }
+        EstimatorSet(flags)
+    }
+
+    /// Whether speed output `e` is built; one left out reads 0.
+    pub fn has(self, e: SpeedOutput) -> bool {
+        self.0[e as usize]
+    }
+
+    /// Whether any baseline (PC, ET, M/T) is built: if none is, neither is their converter.
+    pub fn has_baselines(self) -> bool {
+        self.has(SpeedOutput::Pc) || self.has(SpeedOutput::Et) || self.has(SpeedOutput::Mt)
+    }
+}
+
 impl Default for Spec {
     /// 100 MHz clock, 1024-line disc, dt = 1 ms (ω_lim = 0.9766 rev/s = 58.6 r/min),
     /// 24-bit counters (dt up to 167 ms), 1 s zero-speed timeout.
@@ -361,16 +387,19 @@ impl Params {
         }
     }
 
+    /// The speed outputs the core computes (`estimators`), as a set.
+    pub fn estimators(&self) -> EstimatorSet {
+        EstimatorSet::of(&self.spec.estimators)
+    }
+
     /// Whether the core computes speed output `e` (`estimators`); one left out reads 0.
     pub fn has(&self, e: SpeedOutput) -> bool {
-        self.spec.estimators.contains(&e)
+        self.estimators().has(e)
     }
 
     /// Whether any baseline (PC, ET, M/T) is built: if none is, neither is their converter.
     pub fn has_baselines(&self) -> bool {
-        [SpeedOutput::Pc, SpeedOutput::Et, SpeedOutput::Mt]
-            .into_iter()
-            .any(|e| self.has(e))
+        self.estimators().has_baselines()
     }
 
     /// The estimators built, as `--estimators` takes them (`n1,n2,n3,pc,et,mt`).

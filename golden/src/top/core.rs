@@ -90,8 +90,8 @@ use crate::frontend::{
     QuadratureDecoder, MODE_INVALID, MODE_X1, MODE_X2,
 };
 use crate::params::{
-    max_value, Params, SpeedOutput, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES, POSITION_BITS,
-    SPEED_FRAC_BITS,
+    max_value, EstimatorSet, Params, SpeedOutput, ERROR_COUNT_BITS, FILTER_BITS, MIN_DT_CYCLES,
+    POSITION_BITS, SPEED_FRAC_BITS,
 };
 use crate::top::mode_reset::ModeReset;
 use crate::top::port_fields::port_struct;
@@ -254,9 +254,7 @@ pub struct CoreModel {
     et_have: bool,
     baseline: BaselineSpeedsModel,
     /// The speed outputs built (`estimators`); the others read 0.
-    estimators: Vec<SpeedOutput>,
-    /// At least one of PC, ET, M/T is built (else so is not their converter).
-    has_baselines: bool,
+    estimators: EstimatorSet,
 }
 
 /// Index of the channels in [`CoreModel`]'s arrays.
@@ -305,14 +303,13 @@ impl CoreModel {
                 BaselineFormat::new(p.counter_bits(), SPEED_FRAC_BITS)
                     .expect("validated parameters give a legal baseline format"),
             ),
-            estimators: p.spec().estimators.clone(),
-            has_baselines: p.has_baselines(),
+            estimators: p.estimators(),
         }
     }
 
     /// `v` if speed output `e` is built, else 0 (its port is tied low).
     fn built<T: Default>(&self, e: SpeedOutput, v: T) -> T {
-        if self.estimators.contains(&e) {
+        if self.estimators.has(e) {
             v
         } else {
             T::default()
@@ -547,7 +544,7 @@ impl CoreModel {
             speed_et: self.built(SpeedOutput::Et, self.baseline.outputs().speeds.et),
             speed_mt: self.built(SpeedOutput::Mt, self.baseline.outputs().speeds.mt),
             // No converter without a baseline.
-            baseline_strobe: self.baseline.outputs().valid && self.has_baselines,
+            baseline_strobe: self.baseline.outputs().valid && self.estimators.has_baselines(),
             valid: calc.have_speeds && !stalled && !self.cfg_error,
             stalled,
             fault_illegal: self.faults[0],
