@@ -2963,12 +2963,14 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
     localparam  p_one = 49'h1;
     localparam  p_msb = 49'h1000000000000;
     localparam  p_x_msb = 49'h1000000;
+    localparam  p_x_next = 49'h800000;
     localparam  s_zero = 41'h0;
     localparam  s_one = 41'h1;
     localparam  s_two = 41'h2;
     localparam  s_three = 41'h3;
     localparam  s_fill_two = 41'h18000000000;
     localparam  s_msb = 41'h10000000000;
+    localparam  s_half_mask = 41'hffffffffff;
     localparam  m_zero = 2'b0;
     localparam  m_one = 2'b1;
     localparam  m_two = 2'b10;
@@ -3074,6 +3076,12 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
     reg  [48:0] acc_den$d;
     wire  [48:0] acc_den$q;
     reg  acc_den$clock;
+    reg  [48:0] op_num$d;
+    wire  [48:0] op_num$q;
+    reg  op_num$clock;
+    reg  [48:0] op_den$d;
+    wire  [48:0] op_den$q;
+    reg  op_den$clock;
     reg  [40:0] stage_n1$d;
     wire  [40:0] stage_n1$q;
     reg  stage_n1$clock;
@@ -3144,9 +3152,11 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
     reg  [48:0] den_sel;
     reg  [48:0] shifted;
     reg  rem_negative;
-    reg  fits;
-    reg  x_bit;
+    reg  [48:0] x_first;
+    reg  x_next;
+    reg  mul_last_next;
     reg  [40:0] half;
+    reg  last_bit;
     reg  [40:0] inc_base;
     reg  [40:0] inc_plus;
     reg  req_by_two;
@@ -3300,6 +3310,16 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
         .q(acc_den$q),
         .clock(acc_den$clock)
     );
+    encspeed_core$calc$op_num op_num(
+        .d(op_num$d),
+        .q(op_num$q),
+        .clock(op_num$clock)
+    );
+    encspeed_core$calc$op_den op_den(
+        .d(op_den$d),
+        .q(op_den$q),
+        .clock(op_den$clock)
+    );
     encspeed_core$calc$stage_n1 stage_n1(
         .d(stage_n1$d),
         .q(stage_n1$q),
@@ -3429,6 +3449,8 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
         mul_x$clock = clock;
         acc_num$clock = clock;
         acc_den$clock = clock;
+        op_num$clock = clock;
+        op_den$clock = clock;
         stage_n1$clock = clock;
         stage_n2$clock = clock;
         out_n1$clock = clock;
@@ -3471,6 +3493,8 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
         mul_x$d = mul_x$q;
         acc_num$d = acc_num$q;
         acc_den$d = acc_den$q;
+        op_num$d = op_num$q;
+        op_den$d = op_den$q;
         stage_n1$d = stage_n1$q;
         stage_n2$d = stage_n2$q;
         out_n1$d = out_n1$q;
@@ -3815,21 +3839,29 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
             div_sub$b = den$q;
             div_sub$carry_in = 1'b0;
         end
-        fits = (div_sub$sum & p_msb) == p_zero;
-        x_bit = (mul_x$q & p_x_msb) != p_zero;
         mul_den$a = acc_den$q << sh_one;
-        mul_den$b = p_zero;
+        mul_den$b = op_den$q;
         mul_den$carry_in = 1'b0;
         mul_num$a = acc_num$q << sh_one;
-        mul_num$b = p_zero;
+        mul_num$b = op_num$q;
         mul_num$carry_in = 1'b0;
-        if (x_bit) begin
-            mul_den$b = ndt_wide;
-            if (~mul_last$q) begin
-                mul_num$b = nep_wide;
+        x_first = (nep_wide << sh_one) - p_one;
+        x_next = (mul_x$q & p_x_next) != p_zero;
+        mul_last_next = count$q == count_before_mul_last;
+        if ((state$q == st_setup) & second$q) begin
+            x_next = (x_first & p_x_msb) != p_zero;
+            mul_last_next = 1'b0;
+        end
+        op_den$d = p_zero;
+        op_num$d = p_zero;
+        if (x_next) begin
+            op_den$d = ndt_wide;
+            if (~mul_last_next) begin
+                op_num$d = nep_wide;
             end
         end
-        half = quo$q >> sh_one;
+        half = quo$q & s_half_mask;
+        last_bit = ~rem_negative;
         if (w_ndt_zero$q) begin
             half = s_max;
         end
@@ -3843,7 +3875,7 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
             addend = ~half;
         end
         increment = inc_r0$q;
-        if ((quo$q & s_one) != s_zero) begin
+        if (last_bit) begin
             increment = inc_r1$q;
         end
         round_add$a = addend;
@@ -3911,12 +3943,11 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
             part_rem$d = num_sel >> sh_n;
             num_shift$d = num_sel << sh_low;
             den$d = den_sel;
-            quo$d = s_zero;
             count$d = count_first;
             mul_last$d = 1'b0;
             state$d = st_step;
             if (phase$q == ph_one) begin
-                mul_x$d = (nep_wide << sh_one) - p_one;
+                mul_x$d = x_first;
                 acc_num$d = p_zero;
                 acc_den$d = p_zero;
                 mul_on$d = 1'b1;
@@ -3932,11 +3963,11 @@ module encspeed_core$calc(clock,reset,start,nep,ndt,negative,mode_shift,position
             part_rem$d = div_sub$sum;
             num_shift$d = num_shift$q << sh_one;
             quo$d = quo$q << sh_one;
-            if (fits) begin
+            if (~rem_negative) begin
                 quo$d = (quo$q << sh_one) | s_one;
             end
             count$d = count$q - count_one;
-            mul_last$d = count$q == count_before_mul_last;
+            mul_last$d = mul_last_next;
             if (mul_on$q) begin
                 mul_x$d = mul_x$q << sh_one;
                 acc_num$d = mul_num$sum;
@@ -4668,6 +4699,44 @@ module encspeed_core$calc$num_shift(d,q,clock);
     end
           
 endmodule // encspeed_core$calc$num_shift
+
+
+module encspeed_core$calc$op_den(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$op_den
+
+
+module encspeed_core$calc$op_num(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_core$calc$op_num
 
 
 module encspeed_core$calc$out_n1(d,q,clock);
@@ -9019,6 +9088,9 @@ module encspeed_core$startup(clock,reset,cfg_filter,front_reset);
     localparam  one = 16'h1;
     localparam  max = 16'hffff;
     localparam  sync_zero = 2'b0;
+    localparam  top = 17'b10000000000000000;
+    localparam  wide_one = 17'b1;
+    localparam  wide_zero = 17'b0;
     
     // Stub signals
     reg  released$d;
@@ -9040,6 +9112,8 @@ module encspeed_core$startup(clock,reset,cfg_filter,front_reset);
     // Local signals
     reg  hold;
     reg  reached;
+    reg  [16:0] count_wide;
+    reg  [16:0] filter_wide;
     
     // Sub module instances
     encspeed_core$startup$released released(
@@ -9080,7 +9154,142 @@ module encspeed_core$startup(clock,reset,cfg_filter,front_reset);
         done$d = done$q;
         counting$d = counting$q;
         released$d = released$q;
-        reached = (settle_edges$q >= cfg_filter) & counting$q;
+        count_wide = wide_zero;
+        filter_wide = wide_zero;
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[0]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[0]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[1]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[1]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[2]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[2]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[3]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[3]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[4]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[4]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[5]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[5]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[6]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[6]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[7]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[7]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[8]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[8]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[9]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[9]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[10]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[10]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[11]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[11]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[12]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[12]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[13]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[13]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[14]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[14]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[15]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[15]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (counting$q) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = (filter_wide >> wide_one) | top;
+        reached = count_wide >= filter_wide;
         counting$d = sync_edges$q == two;
         if (sync_edges$q != two) begin
             sync_edges$d = sync_edges$q + sync_one;

@@ -3182,12 +3182,14 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
     localparam  p_one = 49'h1;
     localparam  p_msb = 49'h1000000000000;
     localparam  p_x_msb = 49'h1000000;
+    localparam  p_x_next = 49'h800000;
     localparam  s_zero = 41'h0;
     localparam  s_one = 41'h1;
     localparam  s_two = 41'h2;
     localparam  s_three = 41'h3;
     localparam  s_fill_two = 41'h18000000000;
     localparam  s_msb = 41'h10000000000;
+    localparam  s_half_mask = 41'hffffffffff;
     localparam  m_zero = 2'b0;
     localparam  m_one = 2'b1;
     localparam  m_two = 2'b10;
@@ -3293,6 +3295,12 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
     reg  [48:0] acc_den$d;
     wire  [48:0] acc_den$q;
     reg  acc_den$clock;
+    reg  [48:0] op_num$d;
+    wire  [48:0] op_num$q;
+    reg  op_num$clock;
+    reg  [48:0] op_den$d;
+    wire  [48:0] op_den$q;
+    reg  op_den$clock;
     reg  [40:0] stage_n1$d;
     wire  [40:0] stage_n1$q;
     reg  stage_n1$clock;
@@ -3363,9 +3371,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
     reg  [48:0] den_sel;
     reg  [48:0] shifted;
     reg  rem_negative;
-    reg  fits;
-    reg  x_bit;
+    reg  [48:0] x_first;
+    reg  x_next;
+    reg  mul_last_next;
     reg  [40:0] half;
+    reg  last_bit;
     reg  [40:0] inc_base;
     reg  [40:0] inc_plus;
     reg  req_by_two;
@@ -3519,6 +3529,16 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
         .q(acc_den$q),
         .clock(acc_den$clock)
     );
+    encspeed_wb$core$calc$op_num op_num(
+        .d(op_num$d),
+        .q(op_num$q),
+        .clock(op_num$clock)
+    );
+    encspeed_wb$core$calc$op_den op_den(
+        .d(op_den$d),
+        .q(op_den$q),
+        .clock(op_den$clock)
+    );
     encspeed_wb$core$calc$stage_n1 stage_n1(
         .d(stage_n1$d),
         .q(stage_n1$q),
@@ -3648,6 +3668,8 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
         mul_x$clock = clock;
         acc_num$clock = clock;
         acc_den$clock = clock;
+        op_num$clock = clock;
+        op_den$clock = clock;
         stage_n1$clock = clock;
         stage_n2$clock = clock;
         out_n1$clock = clock;
@@ -3690,6 +3712,8 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
         mul_x$d = mul_x$q;
         acc_num$d = acc_num$q;
         acc_den$d = acc_den$q;
+        op_num$d = op_num$q;
+        op_den$d = op_den$q;
         stage_n1$d = stage_n1$q;
         stage_n2$d = stage_n2$q;
         out_n1$d = out_n1$q;
@@ -4034,21 +4058,29 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
             div_sub$b = den$q;
             div_sub$carry_in = 1'b0;
         end
-        fits = (div_sub$sum & p_msb) == p_zero;
-        x_bit = (mul_x$q & p_x_msb) != p_zero;
         mul_den$a = acc_den$q << sh_one;
-        mul_den$b = p_zero;
+        mul_den$b = op_den$q;
         mul_den$carry_in = 1'b0;
         mul_num$a = acc_num$q << sh_one;
-        mul_num$b = p_zero;
+        mul_num$b = op_num$q;
         mul_num$carry_in = 1'b0;
-        if (x_bit) begin
-            mul_den$b = ndt_wide;
-            if (~mul_last$q) begin
-                mul_num$b = nep_wide;
+        x_first = (nep_wide << sh_one) - p_one;
+        x_next = (mul_x$q & p_x_next) != p_zero;
+        mul_last_next = count$q == count_before_mul_last;
+        if ((state$q == st_setup) & second$q) begin
+            x_next = (x_first & p_x_msb) != p_zero;
+            mul_last_next = 1'b0;
+        end
+        op_den$d = p_zero;
+        op_num$d = p_zero;
+        if (x_next) begin
+            op_den$d = ndt_wide;
+            if (~mul_last_next) begin
+                op_num$d = nep_wide;
             end
         end
-        half = quo$q >> sh_one;
+        half = quo$q & s_half_mask;
+        last_bit = ~rem_negative;
         if (w_ndt_zero$q) begin
             half = s_max;
         end
@@ -4062,7 +4094,7 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
             addend = ~half;
         end
         increment = inc_r0$q;
-        if ((quo$q & s_one) != s_zero) begin
+        if (last_bit) begin
             increment = inc_r1$q;
         end
         round_add$a = addend;
@@ -4130,12 +4162,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
             part_rem$d = num_sel >> sh_n;
             num_shift$d = num_sel << sh_low;
             den$d = den_sel;
-            quo$d = s_zero;
             count$d = count_first;
             mul_last$d = 1'b0;
             state$d = st_step;
             if (phase$q == ph_one) begin
-                mul_x$d = (nep_wide << sh_one) - p_one;
+                mul_x$d = x_first;
                 acc_num$d = p_zero;
                 acc_den$d = p_zero;
                 mul_on$d = 1'b1;
@@ -4151,11 +4182,11 @@ module encspeed_wb$core$calc(clock,reset,start,nep,ndt,negative,mode_shift,posit
             part_rem$d = div_sub$sum;
             num_shift$d = num_shift$q << sh_one;
             quo$d = quo$q << sh_one;
-            if (fits) begin
+            if (~rem_negative) begin
                 quo$d = (quo$q << sh_one) | s_one;
             end
             count$d = count$q - count_one;
-            mul_last$d = count$q == count_before_mul_last;
+            mul_last$d = mul_last_next;
             if (mul_on$q) begin
                 mul_x$d = mul_x$q << sh_one;
                 acc_num$d = mul_num$sum;
@@ -4887,6 +4918,44 @@ module encspeed_wb$core$calc$num_shift(d,q,clock);
     end
           
 endmodule // encspeed_wb$core$calc$num_shift
+
+
+module encspeed_wb$core$calc$op_den(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$op_den
+
+
+module encspeed_wb$core$calc$op_num(d,q,clock);
+    
+    // Module arguments
+    input wire  [48:0] d;
+    output reg  [48:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 49'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_wb$core$calc$op_num
 
 
 module encspeed_wb$core$calc$out_n1(d,q,clock);
@@ -9238,6 +9307,9 @@ module encspeed_wb$core$startup(clock,reset,cfg_filter,front_reset);
     localparam  one = 16'h1;
     localparam  max = 16'hffff;
     localparam  sync_zero = 2'b0;
+    localparam  top = 17'b10000000000000000;
+    localparam  wide_one = 17'b1;
+    localparam  wide_zero = 17'b0;
     
     // Stub signals
     reg  released$d;
@@ -9259,6 +9331,8 @@ module encspeed_wb$core$startup(clock,reset,cfg_filter,front_reset);
     // Local signals
     reg  hold;
     reg  reached;
+    reg  [16:0] count_wide;
+    reg  [16:0] filter_wide;
     
     // Sub module instances
     encspeed_wb$core$startup$released released(
@@ -9299,7 +9373,142 @@ module encspeed_wb$core$startup(clock,reset,cfg_filter,front_reset);
         done$d = done$q;
         counting$d = counting$q;
         released$d = released$q;
-        reached = (settle_edges$q >= cfg_filter) & counting$q;
+        count_wide = wide_zero;
+        filter_wide = wide_zero;
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[0]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[0]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[1]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[1]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[2]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[2]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[3]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[3]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[4]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[4]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[5]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[5]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[6]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[6]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[7]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[7]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[8]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[8]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[9]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[9]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[10]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[10]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[11]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[11]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[12]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[12]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[13]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[13]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[14]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[14]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (settle_edges$q[15]) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = filter_wide >> wide_one;
+        if (cfg_filter[15]) begin
+            filter_wide = filter_wide | top;
+        end
+        count_wide = count_wide >> wide_one;
+        if (counting$q) begin
+            count_wide = count_wide | top;
+        end
+        filter_wide = (filter_wide >> wide_one) | top;
+        reached = count_wide >= filter_wide;
         counting$d = sync_edges$q == two;
         if (sync_edges$q != two) begin
             sync_edges$d = sync_edges$q + sync_one;

@@ -93,6 +93,13 @@
 //!   remainder is the adder's sum as it is and the quotient bit its top bit inverted: no
 //!   comparator and no multiplexer behind the carry chain (the restoring form's "fits"
 //!   selected all P remainder bits at the end of the chain, a critical path on the HX8K).
+//!   The quotient register does not take that bit from the chain either: each step shifts
+//!   in the bit of the step before, read from the sign of `part_rem` (a register), so the
+//!   high half's chain ends at `part_rem` alone (its top bit into the quotient register
+//!   through a LUT was the worst path of the HX8K on three seeds out of four). After the S
+//!   steps the register holds a spurious 1 (the sign of the non-negative preload) above
+//!   q >> 1, and the last bit r is the sign of the last remainder: h is the register with
+//!   its top bit cleared, r the inverted top bit of `part_rem`, both registers as before.
 //! * **Multiplier** (shift-add, MSB first, during the first N + 1 steps of the n1 division).
 //!   With X = 2·Nep − 1 (odd, N + 1 bits): Ndt·(2·Nep − 1) = Ndt·X and
 //!   2·Nep·(Nep − 1) = Nep·(X − 1), where X − 1 is X with bit 0 cleared: both accumulate
@@ -134,9 +141,12 @@
 //! outputs (5S), the published tag (32 + 2N), a 6-bit step counter, 12 control bits, the
 //! rounding increment for r = 0 and 1 (2 × 2 bits), and in the four two-cycle adders the
 //! low sums and the high operands (about 2P each for the divider and the multiplier, 2S
-//! for the rounding). The tag registers only load (flip-flops with an enable, no LUT). For
+//! for the rounding), and the multiplier's two registered operands (2N: their high bits
+//! are constant 0). The tag registers only load (flip-flops with an enable, no LUT). For
 //! N = 24, F = 16, yosys 0.23 `synth_ice40` maps the block (as it sits in the generated
-//! `encspeed_core`) to 1 026 flip-flops, 921 LUT4 and 278 carry cells (880, 919 and 278
+//! `encspeed_core`) to 1 072 flip-flops, 874 LUT4 and 278 carry cells (1 026, 921 and 278
+//! before the quotient bit came from `part_rem`'s sign and the multiplier's operands were
+//! registered; 880, 919 and 278
 //! before it carried the tag and became the core's output registers; the core's
 //! `SpeedTag`, a second request machine of 250 flip-flops, and `SpeedHold`, a second rank
 //! of 123 output flip-flops, went with it; 826, 914 and 282 with the restoring divider
@@ -241,11 +251,21 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     part_rem: DFF<Bits<P>>,
     num_shift: DFF<Bits<P>>,
     den: DFF<Bits<P>>,
+    /// The quotient bits of the steps before the last, one step late (module docs:
+    /// Datapath): after the S steps, bit S − 1 is a spurious 1 and bits S − 2..0 are
+    /// q >> 1.
     quo: DFF<Bits<S>>,
     // Multiplier.
     mul_x: DFF<Bits<P>>,
     acc_num: DFF<Bits<P>>,
     acc_den: DFF<Bits<P>>,
+    /// The accumulations' second operands for the step that runs, registered when the
+    /// step before it ends (or at the set-up): Ndt, and Nep (0 at the last step, X − 1),
+    /// if the step's bit of X is 1, else 0. Decoding the bit and the last step in front of
+    /// the adders put two logic levels before their carry chains (the worst path of
+    /// `encspeed_core` on one HX8K seed).
+    op_num: DFF<Bits<P>>,
+    op_den: DFF<Bits<P>>,
     // Results.
     stage_n1: DFF<Bits<S>>,
     stage_n2: DFF<Bits<S>>,
@@ -276,17 +296,22 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     shifted: Signal<Local, Bits<P>>,
     /// R < 0 (R's top bit, a register): this step adds den instead of subtracting it.
     rem_negative: Signal<Local, Bit>,
-    /// The quotient bit: the new remainder is not negative (the sum's top bit is 0).
-    fits: Signal<Local, Bit>,
-    x_bit: Signal<Local, Bit>,
+    /// X = 2·Nep − 1, loaded into `mul_x` at the first set-up.
+    x_first: Signal<Local, Bits<P>>,
+    /// The next step's bit of X (bit N of `x_first` at the set-up, bit N − 1 of `mul_x`
+    /// at a step) and whether the next step is the last multiplier step.
+    x_next: Signal<Local, Bit>,
+    mul_last_next: Signal<Local, Bit>,
     /// The multiplier's accumulations acc·2 + (Ndt or 0) and acc·2 + (Nep or 0), over two
     /// cycles each.
     mul_den: crate::arith::two_cycle_adder::TwoCycleAdder<P>,
     mul_num: crate::arith::two_cycle_adder::TwoCycleAdder<P>,
     /// The rounding, scaling and sign adder, over two cycles.
     round_add: crate::arith::two_cycle_adder::TwoCycleAdder<S>,
-    /// Quotient >> 1 (or a special value).
+    /// Quotient >> 1 (`quo` without its spurious top bit), or a special value.
     half: Signal<Local, Bits<S>>,
+    /// The last quotient bit r: the last remainder is not negative.
+    last_bit: Signal<Local, Bit>,
     /// The rounding adder's small operand for a last quotient bit r = 0 and r = 1,
     /// registered when the request is taken (module docs: Rounding).
     inc_r0: DFF<Bits<S>>,
@@ -316,6 +341,8 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     p_msb: Constant<Bits<P>>,
     /// 2^N: the multiplier bit (X has N + 1 bits).
     p_x_msb: Constant<Bits<P>>,
+    /// 2^(N − 1): the multiplier bit of the next step.
+    p_x_next: Constant<Bits<P>>,
     s_zero: Constant<Bits<S>>,
     s_one: Constant<Bits<S>>,
     s_two: Constant<Bits<S>>,
@@ -324,6 +351,8 @@ pub struct SpeedCalc<const N: usize, const F: usize, const P: usize, const S: us
     s_fill_two: Constant<Bits<S>>,
     /// 2^(S − 1): the sum's top bit, and the sign bit an arithmetic shift by 1 fills in.
     s_msb: Constant<Bits<S>>,
+    /// 2^(S − 1) − 1: `quo` without its top bit.
+    s_half_mask: Constant<Bits<S>>,
     m_zero: Constant<Bits<2>>,
     m_one: Constant<Bits<2>>,
     m_two: Constant<Bits<2>>,
@@ -411,6 +440,8 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             mul_x: Default::default(),
             acc_num: Default::default(),
             acc_den: Default::default(),
+            op_num: Default::default(),
+            op_den: Default::default(),
             stage_n1: Default::default(),
             stage_n2: Default::default(),
             out_n1: Default::default(),
@@ -430,12 +461,14 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             div_sub: Default::default(),
             shifted: Default::default(),
             rem_negative: Default::default(),
-            fits: Default::default(),
-            x_bit: Default::default(),
+            x_first: Default::default(),
+            x_next: Default::default(),
+            mul_last_next: Default::default(),
             mul_den: Default::default(),
             mul_num: Default::default(),
             round_add: Default::default(),
             half: Default::default(),
+            last_bit: Default::default(),
             inc_r0: Default::default(),
             inc_r1: Default::default(),
             inc_base: Default::default(),
@@ -456,6 +489,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
             // P can be 65: build 2^(P−1) bit by bit rather than from a u64.
             p_msb: Constant::new(Bits::<P>::default().replace_bit(P - 1, true)),
             p_x_msb: Constant::new(Bits::<P>::default().replace_bit(N, true)),
+            p_x_next: Constant::new(Bits::<P>::default().replace_bit(N - 1, true)),
             s_zero: Constant::new(0.into()),
             s_one: Constant::new(1.into()),
             s_two: Constant::new(2.into()),
@@ -466,6 +500,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Default
                     .replace_bit(S - 2, true),
             ),
             s_msb: Constant::new(Bits::<S>::default().replace_bit(S - 1, true)),
+            s_half_mask: Constant::new(((1u64 << (S - 1)) - 1).into()),
             m_zero: Constant::new(0.into()),
             m_one: Constant::new(1.into()),
             m_two: Constant::new(2.into()),
@@ -525,6 +560,8 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             mul_x,
             acc_num,
             acc_den,
+            op_num,
+            op_den,
             stage_n1,
             stage_n2,
             out_n1,
@@ -600,20 +637,29 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.div_sub.b.next = self.den.q.val();
             self.div_sub.carry_in.next = false;
         }
-        self.fits.next = (self.div_sub.sum.val() & self.p_msb.val()) == self.p_zero.val();
 
-        // The multiplier's two accumulations, acc·2 + (operand if the bit of X is 1).
-        self.x_bit.next = (self.mul_x.q.val() & self.p_x_msb.val()) != self.p_zero.val();
+        // The multiplier's two accumulations, acc·2 + (operand if the bit of X is 1): the
+        // operands are registers chosen when the step before ended (`op_num`, `op_den`).
         self.mul_den.a.next = self.acc_den.q.val() << self.sh_one.val();
-        self.mul_den.b.next = self.p_zero.val();
+        self.mul_den.b.next = self.op_den.q.val();
         self.mul_den.carry_in.next = false;
         self.mul_num.a.next = self.acc_num.q.val() << self.sh_one.val();
-        self.mul_num.b.next = self.p_zero.val();
+        self.mul_num.b.next = self.op_num.q.val();
         self.mul_num.carry_in.next = false;
-        if self.x_bit.val() {
-            self.mul_den.b.next = self.ndt_wide.val();
-            if !self.mul_last.q.val() {
-                self.mul_num.b.next = self.nep_wide.val();
+        self.x_first.next = (self.nep_wide.val() << self.sh_one.val()) - self.p_one.val();
+        self.x_next.next = (self.mul_x.q.val() & self.p_x_next.val()) != self.p_zero.val();
+        self.mul_last_next.next = self.count.q.val() == self.count_before_mul_last.val();
+        if (self.state.q.val() == self.st_setup.val()) & self.second.q.val() {
+            // The first step's bit: the top bit of X; it is not the last step (S − 1 > F).
+            self.x_next.next = (self.x_first.val() & self.p_x_msb.val()) != self.p_zero.val();
+            self.mul_last_next.next = false;
+        }
+        self.op_den.d.next = self.p_zero.val();
+        self.op_num.d.next = self.p_zero.val();
+        if self.x_next.val() {
+            self.op_den.d.next = self.ndt_wide.val();
+            if !self.mul_last_next.val() {
+                self.op_num.d.next = self.nep_wide.val();
             }
         }
 
@@ -621,7 +667,8 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         // then an arithmetic shift by s. With q the last quotient, h = q >> 1 and r = q & 1;
         // the special cases replace h and r (Ndt = 0: h = 2^(N+F) − 1, r = 0; Nep = 0:
         // h = 0, r = 0).
-        self.half.next = self.quo.q.val() >> self.sh_one.val();
+        self.half.next = self.quo.q.val() & self.s_half_mask.val();
+        self.last_bit.next = !self.rem_negative.val();
         if self.w_ndt_zero.q.val() {
             self.half.next = self.s_max.val();
         }
@@ -637,7 +684,7 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         // e or f for r = 0 and r = 1 were registered when the request was taken: only r,
         // the quotient's bit 0, chooses here, one logic level in front of the adder.
         self.increment.next = self.inc_r0.q.val();
-        if (self.quo.q.val() & self.s_one.val()) != self.s_zero.val() {
+        if self.last_bit.val() {
             self.increment.next = self.inc_r1.q.val();
         }
         self.round_add.a.next = self.addend.val();
@@ -717,13 +764,12 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
             self.part_rem.d.next = self.num_sel.val() >> self.sh_n.val();
             self.num_shift.d.next = self.num_sel.val() << self.sh_low.val();
             self.den.d.next = self.den_sel.val();
-            self.quo.d.next = self.s_zero.val();
             self.count.d.next = self.count_first.val();
             // S − 1 > F (N ≥ 8).
             self.mul_last.d.next = false;
             self.state.d.next = self.st_step.val();
             if self.phase.q.val() == self.ph_one.val() {
-                self.mul_x.d.next = (self.nep_wide.val() << self.sh_one.val()) - self.p_one.val();
+                self.mul_x.d.next = self.x_first.val();
                 self.acc_num.d.next = self.p_zero.val();
                 self.acc_den.d.next = self.p_zero.val();
                 self.mul_on.d.next = true;
@@ -738,12 +784,14 @@ impl<const N: usize, const F: usize, const P: usize, const S: usize> Logic
         if (self.state.q.val() == self.st_step.val()) & self.second.q.val() {
             self.part_rem.d.next = self.div_sub.sum.val();
             self.num_shift.d.next = self.num_shift.q.val() << self.sh_one.val();
+            // The quotient bit of the step before this one: the sign of the remainder
+            // it left, a register, so the carry chain ends at `part_rem` alone.
             self.quo.d.next = self.quo.q.val() << self.sh_one.val();
-            if self.fits.val() {
+            if !self.rem_negative.val() {
                 self.quo.d.next = (self.quo.q.val() << self.sh_one.val()) | self.s_one.val();
             }
             self.count.d.next = self.count.q.val() - self.count_one.val();
-            self.mul_last.d.next = self.count.q.val() == self.count_before_mul_last.val();
+            self.mul_last.d.next = self.mul_last_next.val();
             if self.mul_on.q.val() {
                 self.mul_x.d.next = self.mul_x.q.val() << self.sh_one.val();
                 self.acc_num.d.next = self.mul_num.sum.val();

@@ -16,10 +16,12 @@
 //! together with "the synchronisers have passed" is a register, `counting`: the settle count
 //! leaves 0 at the first edge after the synchroniser count reaches 2 and only a reset brings
 //! either back, so `counting` ← ¬reset ∧ (synchroniser count = 2) is exactly their
-//! conjunction one edge later. The hold's register then takes one LUT after the 16-bit
-//! comparison's carry chain, with `reset`, `done` and `counting` (a zero test of L in front
-//! of the comparison, and then the 16-bit zero test and the synchroniser test after it, were
-//! the critical path of `encspeed_wb` on two seeds).
+//! conjunction one edge later. `counting` is not ANDed after the comparison either: the
+//! comparison is {`counting`, count} ≥ {1, L} at 17 bits, true exactly when `counting` and
+//! count ≥ L, so the hold's register takes one LUT after the comparison's carry chain, with
+//! `reset` and `done` (a zero test of L in front of the comparison, and then the 16-bit zero
+//! test and the synchroniser test after it, were the critical path of `encspeed_wb` on two
+//! seeds; `counting` ANDed after the chain, the worst path of `encspeed_core` on HX8K seed 3).
 //!
 //! Registers: a 2-bit count of the synchroniser edges (saturating at 2), a 16-bit count of
 //! the edges after them (saturating at 2^16 − 1, the longest filter), a `done` flag set
@@ -31,6 +33,8 @@ use golden::params::FILTER_BITS;
 use rust_hdl::prelude::*;
 
 const FB: usize = FILTER_BITS as usize;
+/// Width of the comparison: the count (or L) with one bit above it.
+const CB: usize = FB + 1;
 
 /// Start-up hold of the front end.
 #[derive(LogicBlock)]
@@ -54,12 +58,20 @@ pub struct Startup {
     counting: DFF<Bit>,
     /// The edge count has reached max(L, 1).
     reached: Signal<Local, Bit>,
+    /// {`counting`, count} and {1, L}: one comparison of the two is count ≥ L and
+    /// `counting`, so no logic level follows its carry chain for `counting`.
+    count_wide: Signal<Local, Bits<CB>>,
+    filter_wide: Signal<Local, Bits<CB>>,
     two: Constant<Bits<2>>,
     sync_one: Constant<Bits<2>>,
     zero: Constant<Bits<FB>>,
     one: Constant<Bits<FB>>,
     max: Constant<Bits<FB>>,
     sync_zero: Constant<Bits<2>>,
+    /// 2^FB: the bit above the count.
+    top: Constant<Bits<CB>>,
+    wide_one: Constant<Bits<CB>>,
+    wide_zero: Constant<Bits<CB>>,
 }
 
 impl Default for Startup {
@@ -76,12 +88,17 @@ impl Default for Startup {
             done: Default::default(),
             counting: Default::default(),
             reached: Default::default(),
+            count_wide: Default::default(),
+            filter_wide: Default::default(),
             two: Constant::new(2.into()),
             sync_one: Constant::new(1.into()),
             zero: Constant::new(0.into()),
             one: Constant::new(1.into()),
             max: Constant::new(((1u64 << FB) - 1).into()),
             sync_zero: Constant::new(0.into()),
+            top: Constant::new((1u64 << FB).into()),
+            wide_one: Constant::new(1.into()),
+            wide_zero: Constant::new(0.into()),
         }
     }
 }
@@ -100,8 +117,27 @@ impl Logic for Startup {
         );
         // count ≥ max(L, 1) (a filter of 0 or 1 cycles delays a level by one edge), as
         // count ≥ L beside the registered count ≠ 0 (which implies the synchronisers passed).
-        self.reached.next =
-            (self.settle_edges.q.val() >= self.cfg_filter.val()) & self.counting.q.val();
+        // Both widened by shifting their bits in at the top, LSB first (a cast would be
+        // emitted as a mask of another width), then the extra bit: `counting` above the
+        // count, 1 above L.
+        self.count_wide.next = self.wide_zero.val();
+        self.filter_wide.next = self.wide_zero.val();
+        for i in 0..FB {
+            self.count_wide.next = self.count_wide.val() >> self.wide_one.val();
+            if self.settle_edges.q.val().get_bit(i) {
+                self.count_wide.next = self.count_wide.val() | self.top.val();
+            }
+            self.filter_wide.next = self.filter_wide.val() >> self.wide_one.val();
+            if self.cfg_filter.val().get_bit(i) {
+                self.filter_wide.next = self.filter_wide.val() | self.top.val();
+            }
+        }
+        self.count_wide.next = self.count_wide.val() >> self.wide_one.val();
+        if self.counting.q.val() {
+            self.count_wide.next = self.count_wide.val() | self.top.val();
+        }
+        self.filter_wide.next = (self.filter_wide.val() >> self.wide_one.val()) | self.top.val();
+        self.reached.next = self.count_wide.val() >= self.filter_wide.val();
         self.counting.d.next = self.sync_edges.q.val() == self.two.val();
         if self.sync_edges.q.val() != self.two.val() {
             self.sync_edges.d.next = self.sync_edges.q.val() + self.sync_one.val();
