@@ -212,7 +212,8 @@ pub fn decode(divisor: u32, levels: &[bool]) -> Vec<Decoded> {
     let mut i = 0;
     while i < levels.len() {
         let level = levels[i];
-        if !(prev && !level) {
+        // Wait for a falling edge.
+        if !prev || level {
             prev = level;
             i += 1;
             continue;

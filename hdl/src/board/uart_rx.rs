@@ -26,9 +26,7 @@
 //! waits for the line to go high again instead of taking the low stop bit for a start bit.
 //! A start bit that is high again at its middle was a glitch and is ignored.
 //!
-//! Resources (alone, every port registered outside it, yosys `synth_ice40`, nextpnr-ice40
-//! `--hx8k --package ct256`): see [`crate::board::uart_wishbone`], which has the figures of
-//! the whole bridge.
+//! Resources: measured for the whole bridge, [`crate::board::uart_wishbone`].
 
 use golden::board::uart::UartTiming;
 use rust_hdl::prelude::*;

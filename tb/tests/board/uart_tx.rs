@@ -48,7 +48,7 @@ proptest! {
                 }
             }
             // A start while busy is ignored: give one now and then.
-            let spurious = busy && c % 7 == 0;
+            let spurious = busy && c.is_multiple_of(7);
             uut.start.next = start || spurious;
             uut.data.next = u64::from(data).into();
             uut.reset.next = c < 2;
