@@ -11,8 +11,9 @@
 //! twin in `hdl`: [`frontend`], [`estimator`] (Table 1, the speed calculator, the bounds),
 //! [`baselines`] (PC, ET, M/T), [`arith`] (the divider), [`ecc`] (eccentricity correction and
 //! identification), [`bus`] (register maps and register files) and [`top`] (the shipped tops,
-//! cycle for cycle, and their ports). [`params`] is the one validated parameter type shared
-//! by the golden model, the HDL constructors and the generated manifest.
+//! cycle for cycle, and their ports). [`board`] is the UART-to-Wishbone bridge of the board
+//! tops: its serial protocol and UART line timing. [`params`] is the one validated parameter
+//! type shared by the golden model, the HDL constructors and the generated manifest.
 //!
 //! This crate never depends on rust-hdl.
 //!
@@ -22,6 +23,7 @@
 
 pub mod arith;
 pub mod baselines;
+pub mod board;
 pub mod bus;
 pub mod ecc;
 pub mod eccentric;

@@ -11,6 +11,7 @@
 //! | [`baselines`] | PC, ET and M/T counters and their speed calculator |
 //! | [`arith`] | the division step, the sequential divider, the adder with a registered low half |
 //! | [`ecc`] | eccentricity correction (tables, δ of a span, corrected M/T and n3) and identification |
+//! | [`board`] | the UART-to-Wishbone bridge of the board tops: UART receiver and transmitter, protocol engine |
 //! | [`bus`] | Wishbone register files of the core and of the eccentricity window |
 //! | [`top`] | the shipped tops `encspeed_core`, `encspeed_wb`, `encspeed_ecc`, `encspeed_ecc_wb` and the fault flags |
 //! | [`sim`] | drivers that build a top for validated parameters and step it cycle by cycle |
@@ -24,6 +25,7 @@
 
 pub mod arith;
 pub mod baselines;
+pub mod board;
 pub mod bus;
 pub mod ecc;
 pub mod emit;
@@ -39,6 +41,10 @@ pub use baselines::baseline_speeds::{baseline_speeds_verilog, BaselineSpeeds};
 pub use baselines::et_timer::{et_timer_verilog, EtTimer};
 pub use baselines::mt_counter::{mt_counter_verilog, MtCounter};
 pub use baselines::pc_counter::{pc_counter_verilog, PcCounter};
+pub use board::uart_rx::{uart_rx_verilog, UartRx};
+pub use board::uart_tx::{uart_tx_verilog, UartTx};
+pub use board::uart_wb_bridge::{uart_wb_bridge_verilog, UartWbBridge};
+pub use board::uart_wishbone::{uart_wishbone_verilog, UartWishbone};
 pub use bus::const_cell::ConstCell;
 pub use bus::ecc_regs::EccRegs;
 pub use bus::irq_cell::IrqCell;
