@@ -11,10 +11,11 @@
 //! - `addr` is the Wishbone byte address, passed as sent (a slave with 32-bit words ignores
 //!   its bits 1:0, as `encspeed_wb` does). The high four bits of `sel` are ignored.
 //! - **Resynchronisation.** While idle, the bridge ignores every byte that is not a command
-//!   byte (`0x52`, `0x57`); a host that lost track sends a few bytes that are neither (e.g.
-//!   7 × `0x00`, enough to end a write's argument bytes) and starts again. A framing error
-//!   (a stop bit received 0) inside a command abandons that command, and no response is
-//!   sent; a framing error while idle is ignored.
+//!   byte (`0x52`, `0x57`), so noise between commands is harmless. A framing error (a stop
+//!   bit received 0) inside a command abandons that command, and no response is sent; a
+//!   framing error while idle is ignored. So a host that lost track sends a break (the line
+//!   low for at least one frame), discards what it receives until nothing has arrived for a
+//!   frame time, and starts again (padding with bytes instead could complete a write).
 //! - Bytes that arrive while the bridge executes a command or sends its response are
 //!   ignored: the protocol is stop-and-wait.
 //! - There is no time-out: a Wishbone slave that never acknowledges stalls the bridge until
