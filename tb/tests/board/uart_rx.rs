@@ -112,3 +112,20 @@ fn verilog_lints_clean() {
     let t = UartTiming::new(12_000_000, 115_200).unwrap();
     common::lint_with_waivers("uart_rx", &uart_rx_verilog(&t, "uart_rx"), &[]);
 }
+
+/// A break (the line low for 100 cycles, longer than a frame of 80) at 8 cycles a bit is
+/// one framing error (after edge 3 + 78), and the receiver waits for the line to go high
+/// before the next start bit: 0x3C from cycle 113 is received after edge 113 + 78.
+#[test]
+fn break_is_one_frame_error() {
+    let t = UartTiming::new(8_000_000, 1_000_000).unwrap();
+    let mut line = vec![true; 3];
+    line.extend([false; 100]);
+    line.extend([true; 10]);
+    line.extend(golden::board::uart::frame_levels(8, 0x3C, true));
+    line.extend([true; 20]);
+    assert_eq!(
+        run(&t, &line),
+        [(81, RxEvent::FrameError), (191, RxEvent::Byte(0x3C))]
+    );
+}
