@@ -15,6 +15,7 @@ use crate::common;
 
 use golden::board::protocol::{Command, Parser, Response, READ, WRITE};
 use golden::board::uart::{decode, frame_levels, line_levels, LineFrame, RxEvent, UartTiming};
+use golden::bus::reg_file::lane_mask;
 use golden::top::port_fields::{PortFields, PortValue};
 use golden::top::ports::Port;
 use hdl::{uart_wb_bridge_verilog, uart_wishbone_verilog, UartWishbone};
@@ -103,14 +104,6 @@ struct Slave {
     log: Vec<(bool, u8, u8, u32)>,
 }
 
-/// The 32-bit mask of the byte lanes `sel`.
-fn lanes(sel: u8) -> u32 {
-    (0..4)
-        .filter(|i| sel & (1 << i) != 0)
-        .map(|i| 0xFFu32 << (8 * i))
-        .sum()
-}
-
 impl Slave {
     fn new(seed: u64, max_wait: u64) -> Slave {
         let mut rng = seed;
@@ -148,7 +141,7 @@ impl Slave {
         self.log
             .push((o.wb_we_o, o.wb_adr_o, o.wb_sel_o, o.wb_dat_o));
         if o.wb_we_o {
-            let m = lanes(o.wb_sel_o);
+            let m = lane_mask(o.wb_sel_o);
             self.mem[k] = (self.mem[k] & !m) | (o.wb_dat_o & m);
             (true, 0)
         } else {
@@ -306,7 +299,7 @@ fn check(
                 responses.extend(Response::Data(word).encode());
             }
             Some(Command::Write { addr, data, sel }) => {
-                let m = lanes(sel & 0xF);
+                let m = lane_mask(sel & 0xF);
                 let w = &mut mem[usize::from(addr >> 2)];
                 *w = (*w & !m) | (data & m);
                 accesses.push((true, addr, sel & 0xF, Some(data)));
