@@ -11,7 +11,8 @@ use std::process::ExitCode;
 mod cli;
 
 use cli::{
-    accuracy, bench, bode, check, docs, ecc_ripple, generate, identify, simulate, synth, vectors,
+    accuracy, bench, bode, check, docs, ecc_ripple, generate, identify, monitor, simulate, synth,
+    vectors,
 };
 
 #[derive(Parser)]
@@ -30,7 +31,8 @@ enum Cmd {
     /// Emit encspeed_core.v, encspeed_wb.v (the core behind Wishbone, with encspeed_regs.h)
     /// and, for a multiple of 4 lines, encspeed_ecc.v (the core with the eccentricity-corrected
     /// speeds and identification) and encspeed_ecc_wb.v (with encspeed_ecc_regs.h); each top
-    /// with its manifest (.toml), instantiation template (_inst.v) and lint waivers (.vlt).
+    /// with its manifest (.toml), instantiation template (_inst.v) and lint waivers (.vlt);
+    /// then the board tops encspeed_board_BOARD.v (and .vlt) at the board clock (docs/boards.md).
     Generate(generate::GenerateArgs),
     /// Run a scenario through the rust-hdl design, check it against the golden model on every
     /// cycle, and write a VCD of every signal.
@@ -86,6 +88,10 @@ enum Cmd {
     /// Exit 0 PASS, 1 mismatches (the first listed), 2 a VCD that cannot be checked. See
     /// docs/reference-model.md.
     Check(check::CheckArgs),
+    /// Watch a board top over its serial port: the IP's parameters read from its registers,
+    /// then position, the six speeds in r/min and the status flags, one line per interval.
+    /// See docs/boards.md.
+    Monitor(monitor::MonitorArgs),
 }
 
 fn fail(code: u8, msg: impl std::fmt::Display) -> ExitCode {
@@ -107,6 +113,7 @@ fn main() -> ExitCode {
         Cmd::EccRipple(args) => ecc_ripple::run(args),
         Cmd::Vectors(args) => vectors::run(&args),
         Cmd::Check(args) => check::run(&args),
+        Cmd::Monitor(args) => monitor::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -40,7 +40,9 @@ fn repository_files() -> Vec<String> {
 
 #[test]
 fn every_source_file_carries_the_spdx_line_at_its_top() {
-    let sources = ["rs", "cpp", "h", "v", "vlt", "toml", "py", "sdc", "core"];
+    let sources = [
+        "rs", "cpp", "h", "v", "vlt", "toml", "py", "sdc", "pcf", "core",
+    ];
     let mut checked = 0;
     let mut missing = Vec::new();
     for f in repository_files() {
@@ -82,6 +84,7 @@ fn every_generated_file_starts_with_its_command_and_the_spdx_line() {
         let second = text.lines().nth(1).unwrap_or_default();
         assert!(second.contains(SPDX), "{f}: second line {second}");
     }
-    // Four tops with .v, _inst.v, .toml, .vlt; two C headers; three pages above.
-    assert_eq!(files.len(), 4 * 4 + 2 + 3);
+    // Four tops with .v, _inst.v, .toml, .vlt; two C headers; two board tops with .v and
+    // .vlt; three pages above.
+    assert_eq!(files.len(), 4 * 4 + 2 + 2 * 2 + 3);
 }

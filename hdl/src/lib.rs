@@ -11,7 +11,7 @@
 //! | [`baselines`] | PC, ET and M/T counters and their speed calculator |
 //! | [`arith`] | the division step, the sequential divider, the adder with a registered low half |
 //! | [`ecc`] | eccentricity correction (tables, δ of a span, corrected M/T and n3) and identification |
-//! | [`board`] | the UART-to-Wishbone bridge of the board tops: UART receiver and transmitter, protocol engine |
+//! | [`board`] | the board tops (`encspeed_wb` behind a UART bridge, power-on reset, LEDs) and their UART-to-Wishbone bridge: UART receiver and transmitter, protocol engine |
 //! | [`bus`] | Wishbone register files of the core and of the eccentricity window |
 //! | [`top`] | the shipped tops `encspeed_core`, `encspeed_wb`, `encspeed_ecc`, `encspeed_ecc_wb` and the fault flags |
 //! | [`sim`] | drivers that build a top for validated parameters and step it cycle by cycle |
@@ -19,7 +19,8 @@
 //! | [`verilog`] | the leaf every block emits its Verilog through |
 //!
 //! Dependencies run one way: `verilog` ← the block folders ← `top` ← `sim` ← `emit`; no
-//! block imports the emitter or a top. [`build_core`] turns validated
+//! block imports the emitter or a top (the one exception is `board::board_top`, a top
+//! over `top::wb_top` that lives beside its bridge). [`build_core`] turns validated
 //! [`Params`](golden::params::Params) into a core of the right counter width behind the
 //! [`CoreSim`] trait (rust-hdl widths are const generics).
 
@@ -41,6 +42,7 @@ pub use baselines::baseline_speeds::{baseline_speeds_verilog, BaselineSpeeds};
 pub use baselines::et_timer::{et_timer_verilog, EtTimer};
 pub use baselines::mt_counter::{mt_counter_verilog, MtCounter};
 pub use baselines::pc_counter::{pc_counter_verilog, PcCounter};
+pub use board::board_top::EncspeedBoard;
 pub use board::uart_rx::{uart_rx_verilog, UartRx};
 pub use board::uart_tx::{uart_tx_verilog, UartTx};
 pub use board::uart_wb_bridge::{uart_wb_bridge_verilog, UartWbBridge};
@@ -80,6 +82,7 @@ pub use frontend::position_counter::{position_counter_verilog, PositionCounter};
 pub use frontend::quadrature_decoder::{quadrature_decoder_verilog, QuadratureDecoder};
 pub use frontend::startup::Startup;
 pub use frontend::two_flop_sync::TwoFlopSync;
+pub use sim::board_sim::{build_board, BoardSim};
 pub use sim::core_sim::{build_core, CoreSim};
 pub use sim::ecc_wb_sim::{build_ecc_wb, EccWbSim};
 pub use sim::wb_sim::{build_wb, WbSim};

@@ -2,9 +2,12 @@
 //! `encspeed generate`: write every file of every shipped top (`hdl::Top::ALL`): for each
 //! top its Verilog, manifest (`.toml`), instantiation template (`_inst.v`) and Verilator
 //! waivers (`.vlt`), and the C headers of the Wishbone tops; the eccentricity tops only for a
-//! multiple of 4 lines. `--prefix` renames every module, macro and file (`hdl::Prefix`).
+//! multiple of 4 lines; then the board tops (`generated/encspeed_board_<board>.v`, the IP at
+//! each board's clock: `golden::board::boards`), except with `--prefix`, which renames
+//! every module, macro and file of the IP (`hdl::Prefix`) for use inside another design.
 
 use clap::Args;
+use golden::board::boards::Board;
 use golden::params::Params;
 use hdl::{Prefix, Top};
 use std::path::{Path, PathBuf};
@@ -55,8 +58,30 @@ fn generate(p: &Params, prefix: &Prefix, out: &Path) -> Outcome {
             Err(why) => refused.push((prefix.file_name(&top.verilog_file()), why)),
         }
     }
-    if let Some((_, why)) = refused.first() {
-        let names: Vec<&str> = refused.iter().map(|(n, _)| n.as_str()).collect();
+    // The board tops: bitstream tops, not IP for another design, so no prefix.
+    if prefix.is_empty() {
+        let command = golden::provenance::generate_command(p);
+        for board in Board::ALL {
+            match hdl::emit::boards::board_files(board, p.spec(), &command) {
+                Ok(files) => {
+                    for (name, text) in files {
+                        write(&name, &text)?;
+                        written.push(out.join(name).display().to_string());
+                    }
+                }
+                Err(why) => refused.push((format!("{}.v", board.module()), why)),
+            }
+        }
+    }
+    // One line per reason: "encspeed_ecc.v and encspeed_ecc_wb.v not written: ...".
+    let mut reasons: Vec<&str> = refused.iter().map(|(_, why)| why.as_str()).collect();
+    reasons.dedup();
+    for why in reasons {
+        let names: Vec<&str> = refused
+            .iter()
+            .filter(|(_, w)| w == why)
+            .map(|(n, _)| n.as_str())
+            .collect();
         eprintln!("{} not written: {why}", names.join(" and "));
     }
     println!(

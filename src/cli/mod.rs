@@ -10,6 +10,7 @@ pub mod docs;
 pub mod ecc_ripple;
 pub mod generate;
 pub mod identify;
+pub mod monitor;
 pub mod simulate;
 pub mod spec;
 pub mod synth;

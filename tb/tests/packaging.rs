@@ -354,3 +354,65 @@ fn fusesoc_lints_every_shipped_top_and_fails_without_the_waivers() {
         .expect_err("lint_wb without its waivers");
     assert!(e.contains("%Warning-UNUSEDSIGNAL"), "{e}");
 }
+
+/// FuseSoC builds each board's bitstream from `encspeed.core` at the repository root with
+/// the open flow (yosys, nextpnr-ice40 at the board clock, icepack): the `.bin` exists,
+/// has the size of the device's bitstream, and nextpnr met the 12 MHz board clock (it
+/// fails the build otherwise; its report is read as well). docs/boards.md.
+#[test]
+fn fusesoc_builds_each_board_bitstream_at_the_board_clock() {
+    use golden::board::boards::Board;
+    let core = "encspeed:ip:encspeed";
+    std::fs::write(tools::target_dir().join("FUSESOC_IGNORE"), "").unwrap();
+    let build = tools::work_dir("fusesoc", "boards").unwrap();
+    // The two boards side by side: each flow is single-threaded.
+    let runs: Vec<(Board, std::thread::JoinHandle<Result<String, String>>)> = Board::ALL
+        .into_iter()
+        .map(|board| {
+            let root = build.join(board.name());
+            let _ = std::fs::remove_dir_all(&root);
+            let handle = std::thread::spawn(move || {
+                tools::fusesoc_run(&repository_root(), &root, board.name(), core)
+            });
+            (board, handle)
+        })
+        .collect();
+    for (board, handle) in runs {
+        let log = handle
+            .join()
+            .unwrap()
+            .unwrap_or_else(|e| panic!("{}: {e}", board.name()));
+        let work = build.join(board.name());
+        let bin = find_file(&work, "encspeed_ip_encspeed_0.1.0.bin")
+            .unwrap_or_else(|| panic!("{}: no .bin under {}\n{log}", board.name(), work.display()));
+        let size = std::fs::metadata(&bin).unwrap().len();
+        // icepack's image sizes: 135 100 bytes for the HX8K, 104 090 for the UP5K.
+        let want = match board {
+            Board::Hx8kBreakout => 135_100,
+            Board::Icebreaker => 104_090,
+        };
+        assert_eq!(size, want, "{}: {} bytes", board.name(), size);
+        let pnr =
+            std::fs::read_to_string(bin.with_file_name("next.log")).unwrap_or_else(|_| log.clone());
+        assert!(
+            pnr.contains("PASS at 12.00 MHz"),
+            "{}: nextpnr did not report the 12 MHz clock met\n{pnr}",
+            board.name()
+        );
+    }
+}
+
+/// The first file named `name` under `dir`, depth first.
+fn find_file(dir: &Path, name: &str) -> Option<PathBuf> {
+    for entry in std::fs::read_dir(dir).ok()? {
+        let path = entry.ok()?.path();
+        if path.is_dir() {
+            if let Some(found) = find_file(&path, name) {
+                return Some(found);
+            }
+        } else if path.file_name().is_some_and(|n| n == name) {
+            return Some(path);
+        }
+    }
+    None
+}

@@ -25,8 +25,9 @@ fn default_params() -> Params {
     Params::new(Spec::default()).unwrap()
 }
 
-/// Every file of every shipped top ([`hdl::Top::ALL`]) is in `generated/` byte for byte,
-/// and `generated/` holds nothing else (no file left behind by a renamed top).
+/// Every file of every shipped top ([`hdl::Top::ALL`]) and every board top
+/// ([`golden::board::boards::Board::ALL`]) is in `generated/` byte for byte, and
+/// `generated/` holds nothing else (no file left behind by a renamed top).
 #[test]
 fn generated_files_are_up_to_date() {
     let p = default_params();
@@ -34,6 +35,14 @@ fn generated_files_are_up_to_date() {
     let mut expected = std::collections::BTreeSet::new();
     for top in hdl::Top::ALL {
         for (name, text) in top.files(&p).unwrap() {
+            let shipped = std::fs::read_to_string(generated(&name)).unwrap_or_default();
+            assert!(text == shipped, "generated/{name} {stale}");
+            expected.insert(name);
+        }
+    }
+    let command = golden::provenance::generate_command(&p);
+    for board in golden::board::boards::Board::ALL {
+        for (name, text) in hdl::emit::boards::board_files(board, p.spec(), &command).unwrap() {
             let shipped = std::fs::read_to_string(generated(&name)).unwrap_or_default();
             assert!(text == shipped, "generated/{name} {stale}");
             expected.insert(name);

@@ -5,6 +5,7 @@
 //! for them (no dates, no paths of this machine), so `generated/` can be checked for
 //! staleness byte for byte.
 
+pub mod boards;
 pub mod inst;
 pub mod manifest;
 pub mod prefix;
@@ -75,17 +76,22 @@ fn header(module: &str, p: &Params, function: &str, extra: &[String], ports: &[P
     }
     line("Ports:".into());
     for port in ports {
-        let w = if port.width == 1 {
-            String::new()
-        } else {
-            format!("[{}:0]", port.width - 1)
-        };
-        line(format!(
-            "  {:<6} {}{}: {}",
-            port.direction, port.name, w, port.description
-        ));
+        line(port_line(port));
     }
     header
+}
+
+/// One port of a file header's port list: direction, name, width, meaning.
+fn port_line(port: &Port) -> String {
+    let w = if port.width == 1 {
+        String::new()
+    } else {
+        format!("[{}:0]", port.width - 1)
+    };
+    format!(
+        "  {:<6} {}{}: {}",
+        port.direction, port.name, w, port.description
+    )
 }
 
 /// Emit the core and its manifest for `p`.

@@ -5,7 +5,8 @@
 //!
 //! Each source file in `lint/` explains each of its waivers. A top that contains another
 //! carries the waivers of what it contains, retargeted to its own file: `encspeed_wb` those
-//! of the core, `encspeed_ecc` the core's, `encspeed_ecc_wb` `encspeed_ecc`'s.
+//! of the core, `encspeed_ecc` the core's, `encspeed_ecc_wb` `encspeed_ecc`'s, each board
+//! top `encspeed_wb`'s.
 
 use super::tops::Top;
 
@@ -17,6 +18,8 @@ const WB: &str = include_str!("lint/wb.vlt");
 const ECC: &str = include_str!("lint/ecc.vlt");
 /// What `encspeed_ecc_wb.v` adds.
 const ECC_WB: &str = include_str!("lint/ecc_wb.vlt");
+/// What a board top `encspeed_board_<board>.v` adds to `encspeed_wb.v`'s.
+const BOARD: &str = include_str!("lint/board.vlt");
 
 /// The waivers of `top`: a Verilator configuration file (it starts with
 /// `` `verilator_config ``), every section retargeted to `<module>.v`.
@@ -27,7 +30,22 @@ pub fn waivers(top: Top) -> String {
         Top::Ecc => (&[CORE, ECC], "encspeed_ecc.v"),
         Top::EccWb => (&[CORE, ECC, ECC_WB], "encspeed_ecc_wb.v"),
     };
-    let to = format!("\"*{}\"", top.verilog_file());
+    retarget(sources, from, &top.verilog_file())
+}
+
+/// The waivers of the board top `module` (`<module>.v`): `encspeed_wb`'s and the board's.
+pub fn board_waivers(module: &str) -> String {
+    retarget(
+        &[CORE, WB, BOARD],
+        "encspeed_board.v",
+        &format!("{module}.v"),
+    )
+}
+
+/// `sources` as one Verilator configuration file, every section retargeted from
+/// `encspeed_core.v`, `encspeed_ecc.v`, `encspeed_wb.v` or `from` to `file`.
+fn retarget(sources: &[&str], from: &str, file: &str) -> String {
+    let to = format!("\"*{file}\"");
     let mut text = String::from("`verilator_config\n");
     for source in sources {
         // Drop each source's own SPDX and `verilator_config lines: the file has one of each.
@@ -40,6 +58,7 @@ pub fn waivers(top: Top) -> String {
             &body
                 .replace("\"*encspeed_core.v\"", &to)
                 .replace("\"*encspeed_ecc.v\"", &to)
+                .replace("\"*encspeed_wb.v\"", &to)
                 .replace(&format!("\"*{from}\""), &to),
         );
     }

@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
+//! The boards the IP ships a top for (`hdl::board::board_top`): each board's clock, serial
+//! line, FPGA and the parameters its `encspeed_wb` is generated with, as data that the
+//! hardware, the `encspeed monitor` host program, the benches and docs/boards.md share.
+//!
+//! Every board top runs the IP at the board's own oscillator (12 MHz on both iCE40 boards:
+//! no PLL is needed, and the default 1 ms dt is then 12 000 cycles), talks 115 200 baud 8N1
+//! through the board's USB UART, and takes the encoder on three pins with the FPGA's
+//! pull-ups on (open-collector encoders work without external resistors).
+
+use crate::board::uart::UartTiming;
+use crate::params::{ParamError, Params, Spec, SpeedOutput};
+use crate::top::port_fields::port_struct;
+use crate::top::ports::Port;
+
+/// The serial line speed of every board top.
+pub const BOARD_BAUD: u64 = 115_200;
+
+/// A board with a shipped top.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Board {
+    /// Lattice iCE40-HX8K breakout board (iCE40HX8K-CT256, 12 MHz oscillator, FT2232H
+    /// channel B as the UART).
+    Hx8kBreakout,
+    /// 1BitSquared iCEBreaker (iCE40UP5K-SG48, 12 MHz oscillator, FT2232H channel B as the
+    /// UART, encoder on PMOD 1A, LEDs on the PMOD 2 snap-off board).
+    Icebreaker,
+}
+
+impl Board {
+    /// Every board, in the order `encspeed generate` writes them.
+    pub const ALL: [Board; 2] = [Board::Hx8kBreakout, Board::Icebreaker];
+
+    /// The board's name: the FuseSoC target, the stem of its pin constraints file in
+    /// `constraints/` and the suffix of its top module.
+    pub fn name(self) -> &'static str {
+        match self {
+            Board::Hx8kBreakout => "hx8k_breakout",
+            Board::Icebreaker => "icebreaker",
+        }
+    }
+
+    /// The board with this [`Board::name`].
+    pub fn from_name(name: &str) -> Option<Board> {
+        Board::ALL.into_iter().find(|b| b.name() == name)
+    }
+
+    /// The top module (and the stem of its file in `generated/`).
+    pub fn module(self) -> String {
+        format!("encspeed_board_{}", self.name())
+    }
+
+    /// The board's oscillator, Hz: the clock of the whole top.
+    pub fn clock_hz(self) -> u64 {
+        12_000_000
+    }
+
+    /// The UART bit timing: [`BOARD_BAUD`] at the board clock (12 MHz / 115 200 → 104
+    /// cycles a bit, +0.16 %).
+    pub fn uart(self) -> UartTiming {
+        UartTiming::new(self.clock_hz(), BOARD_BAUD).expect("115 200 baud fits a 12 MHz clock")
+    }
+
+    /// The parameters of the board's `encspeed_wb` for the user's `spec`: `spec` at the
+    /// board clock, dt kept at the same time (dt_cycles scaled by the clock ratio and
+    /// rounded; the default 1 ms is 12 000 cycles at 12 MHz). The iCEBreaker's UP5K holds
+    /// the IP with n3 alone ([`Board::estimators`]). An error where the scaled parameters
+    /// are not valid (say, a dt too short for the slower clock).
+    pub fn params(self, spec: &Spec) -> Result<Params, ParamError> {
+        let clock_hz = self.clock_hz() as f64;
+        let dt_cycles = (spec.dt_cycles as f64 * clock_hz / spec.clock_hz).round() as u64;
+        Params::new(Spec {
+            clock_hz,
+            dt_cycles,
+            estimators: self.estimators().unwrap_or_else(|| spec.estimators.clone()),
+            ..spec.clone()
+        })
+    }
+
+    /// The speed outputs a board's FPGA holds, where it cannot hold those asked: the
+    /// iCE40UP5K takes n3 alone (with all six, `encspeed_wb` and the bridge are 4 985 of
+    /// its 5 280 logic cells and nextpnr-ice40 finds no legal placement on some runs).
+    pub fn estimators(self) -> Option<Vec<SpeedOutput>> {
+        match self {
+            Board::Hx8kBreakout => None,
+            Board::Icebreaker => Some(vec![SpeedOutput::N3]),
+        }
+    }
+
+    /// The `nextpnr-ice40` device options.
+    pub fn nextpnr_device(self) -> &'static [&'static str] {
+        match self {
+            Board::Hx8kBreakout => &["--hx8k", "--package", "ct256"],
+            Board::Icebreaker => &["--up5k", "--package", "sg48"],
+        }
+    }
+
+    /// The pin constraints file, relative to the repository root.
+    pub fn constraints_file(self) -> String {
+        format!("constraints/{}.pcf", self.name())
+    }
+
+    /// What the board's four LEDs show, `led[0]` first.
+    pub fn led_meaning() -> [&'static str; 4] {
+        [
+            "heartbeat (about 0.7 Hz: the bitstream runs)",
+            "irq (the IRQ_ENABLE'd events of IRQ_STATUS)",
+            "encoder A",
+            "encoder B",
+        ]
+    }
+}
+
+port_struct! {
+    /// Inputs of a board top during one clock cycle, named as its ports.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    pub struct BoardInputs {
+        /// Serial line from the host (idle 1).
+        pub rx: bool,
+        /// Encoder channel A.
+        pub enc_a: bool,
+        /// Encoder channel B.
+        pub enc_b: bool,
+        /// Encoder index Z.
+        pub enc_z: bool,
+    }
+}
+
+port_struct! {
+    /// Outputs of a board top after a rising clock edge, named as its ports.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    pub struct BoardOutputs {
+        /// Serial line to the host.
+        pub tx: bool,
+        /// The four LEDs ([`Board::led_meaning`]), `led[0]` in bit 0.
+        pub led: u8,
+    }
+}
+
+/// The ports of every board top, in the order of its Verilog module header.
+pub fn board_ports() -> Vec<Port> {
+    vec![
+        Port::input("clock", 1, "the board oscillator"),
+        Port::input(
+            "rx",
+            1,
+            "serial line from the host, 8N1 (asynchronous, idle 1)",
+        ),
+        Port::input("enc_a", 1, "encoder channel A (asynchronous)"),
+        Port::input("enc_b", 1, "encoder channel B (asynchronous)"),
+        Port::input("enc_z", 1, "encoder index Z (asynchronous)"),
+        Port::output("tx", 1, "serial line to the host, 8N1 (idle 1)"),
+        Port::output(
+            "led",
+            4,
+            "led[0] heartbeat, led[1] irq, led[2] A, led[3] B (registers)",
+        ),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn boards_run_at_twelve_megahertz_and_115200_baud() {
+        for b in Board::ALL {
+            let p = b.params(&Spec::default()).unwrap();
+            assert_eq!(p.clock_hz(), 12e6);
+            // 1 ms at 12 MHz, by hand.
+            assert_eq!(p.dt_cycles(), 12_000);
+            // 12e6 / 115 200 = 104.17 → 104 cycles a bit.
+            assert_eq!(b.uart().divisor(), 104);
+            assert_eq!(Board::from_name(b.name()), Some(b));
+        }
+        assert_eq!(Board::from_name("ulx3s"), None);
+        // 10 cycles at 100 MHz is 0.1 µs: 1.2 → 1 cycle at 12 MHz, below the 2 a dt needs.
+        let short = Spec {
+            dt_cycles: 10,
+            ..Spec::default()
+        };
+        assert!(Board::Icebreaker.params(&short).is_err());
+        assert_eq!(Board::Hx8kBreakout.module(), "encspeed_board_hx8k_breakout");
+    }
+}
