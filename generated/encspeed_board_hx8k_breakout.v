@@ -68,6 +68,7 @@ module encspeed_board_hx8k_breakout(clock,rx,tx,enc_a,enc_b,enc_z,led);
     reg  ip$enc_a;
     reg  ip$enc_b;
     reg  ip$enc_z;
+    reg  ip$sample;
     reg  ip$wb_cyc_i;
     reg  ip$wb_stb_i;
     reg  ip$wb_we_i;
@@ -123,6 +124,7 @@ module encspeed_board_hx8k_breakout(clock,rx,tx,enc_a,enc_b,enc_z,led);
         .enc_a(ip$enc_a),
         .enc_b(ip$enc_b),
         .enc_z(ip$enc_z),
+        .sample(ip$sample),
         .wb_cyc_i(ip$wb_cyc_i),
         .wb_stb_i(ip$wb_stb_i),
         .wb_we_i(ip$wb_we_i),
@@ -158,6 +160,7 @@ module encspeed_board_hx8k_breakout(clock,rx,tx,enc_a,enc_b,enc_z,led);
         ip$enc_a = enc_a;
         ip$enc_b = enc_b;
         ip$enc_z = enc_z;
+        ip$sample = 1'b0;
         ip$wb_cyc_i = bridge$wb_cyc_o;
         ip$wb_stb_i = bridge$wb_stb_o;
         ip$wb_we_i = bridge$wb_we_o;
@@ -1475,7 +1478,7 @@ module encspeed_board_hx8k_breakout$bridge$utx$shift(d,q,clock);
 endmodule // encspeed_board_hx8k_breakout$bridge$utx$shift
 
 
-module encspeed_board_hx8k_breakout$ip(clock,reset,enc_a,enc_b,enc_z,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq);
+module encspeed_board_hx8k_breakout$ip(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq);
     
     // Module arguments
     input wire  clock;
@@ -1483,6 +1486,7 @@ module encspeed_board_hx8k_breakout$ip(clock,reset,enc_a,enc_b,enc_z,wb_cyc_i,wb
     input wire  enc_a;
     input wire  enc_b;
     input wire  enc_z;
+    input wire  sample;
     input wire  wb_cyc_i;
     input wire  wb_stb_i;
     input wire  wb_we_i;
@@ -1554,6 +1558,7 @@ module encspeed_board_hx8k_breakout$ip(clock,reset,enc_a,enc_b,enc_z,wb_cyc_i,wb
     wire  [1:0] regs$cfg_mode;
     wire  [1:0] regs$cfg_z_mode;
     wire  regs$clear_faults;
+    reg  regs$sample;
     reg  [31:0] regs$position;
     reg  [31:0] regs$z_latch;
     reg  regs$index;
@@ -1643,6 +1648,7 @@ module encspeed_board_hx8k_breakout$ip(clock,reset,enc_a,enc_b,enc_z,wb_cyc_i,wb
         .cfg_mode(regs$cfg_mode),
         .cfg_z_mode(regs$cfg_z_mode),
         .clear_faults(regs$clear_faults),
+        .sample(regs$sample),
         .position(regs$position),
         .z_latch(regs$z_latch),
         .index(regs$index),
@@ -1675,6 +1681,7 @@ module encspeed_board_hx8k_breakout$ip(clock,reset,enc_a,enc_b,enc_z,wb_cyc_i,wb
         regs$clock = clock;
         core$reset = reset;
         regs$reset = reset;
+        regs$sample = sample;
         core$enc_a = enc_a;
         core$enc_b = enc_b;
         core$enc_z = enc_z;
@@ -11910,7 +11917,7 @@ module encspeed_board_hx8k_breakout$ip$core$z_mode_reg(d,q,clock);
 endmodule // encspeed_board_hx8k_breakout$ip$core$z_mode_reg
 
 
-module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);
+module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,sample,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);
     
     // Module arguments
     input wire  clock;
@@ -11930,6 +11937,7 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
     output reg  [1:0] cfg_mode;
     output reg  [1:0] cfg_z_mode;
     output reg  clear_faults;
+    input wire  sample;
     input wire  [31:0] position;
     input wire  [31:0] z_latch;
     input wire  index;
@@ -11969,6 +11977,7 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
     localparam  e_fault = 32'h8;
     localparam  e_update = 32'h10;
     localparam  e_stall = 32'h20;
+    localparam  e_sample = 32'h40;
     localparam  z32 = 32'h0;
     
     // Stub signals
@@ -12013,7 +12022,7 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
     reg  [31:0] ctrl$lanes;
     reg  [31:0] ctrl$ones;
     wire  [31:0] ctrl$rdata;
-    wire  [3:0] ctrl$q;
+    wire  [9:0] ctrl$q;
     reg  r_cfg_dt$clock;
     reg  r_cfg_dt$reset;
     reg  [7:0] r_cfg_dt$adr;
@@ -12047,6 +12056,44 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
     reg  fault_clear$wr;
     reg  [31:0] fault_clear$ones;
     wire  fault_clear$pulse;
+    reg  trigger$clock;
+    reg  trigger$reset;
+    reg  [7:0] trigger$adr;
+    reg  trigger$wr;
+    reg  [31:0] trigger$ones;
+    wire  trigger$pulse;
+    reg  snapshot$clock;
+    reg  snapshot$reset;
+    reg  snapshot$take;
+    reg  snapshot$sampled;
+    reg  [31:0] snapshot$position;
+    reg  [23:0] snapshot$nep;
+    reg  [23:0] snapshot$ndt;
+    reg  [40:0] snapshot$speed_n1;
+    reg  [40:0] snapshot$speed_n2;
+    reg  [40:0] snapshot$speed_n3;
+    reg  [40:0] snapshot$speed_pc;
+    reg  [40:0] snapshot$speed_et;
+    reg  [40:0] snapshot$speed_mt;
+    reg  snapshot$valid;
+    reg  snapshot$stalled;
+    reg  snapshot$direction;
+    wire  [31:0] snapshot$seen_position;
+    wire  [23:0] snapshot$seen_nep;
+    wire  [23:0] snapshot$seen_ndt;
+    wire  [40:0] snapshot$seen_n1;
+    wire  [40:0] snapshot$seen_n2;
+    wire  [40:0] snapshot$seen_n3;
+    wire  [40:0] snapshot$seen_pc;
+    wire  [40:0] snapshot$seen_et;
+    wire  [40:0] snapshot$seen_mt;
+    wire  snapshot$seen_valid;
+    wire  snapshot$seen_stalled;
+    wire  snapshot$seen_direction;
+    wire  [31:0] snapshot$count;
+    reg  [7:0] snap_count$adr;
+    reg  [31:0] snap_count$value;
+    wire  [31:0] snap_count$rdata;
     reg  [7:0] r_position$adr;
     reg  [31:0] r_position$value;
     wire  [31:0] r_position$rdata;
@@ -12118,6 +12165,9 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
     reg  prev_stalled$clock;
     
     // Local signals
+    reg  sampled;
+    reg  hold;
+    reg  take;
     reg  [31:0] status_word;
     reg  [31:0] events;
     reg  fault_rose;
@@ -12227,6 +12277,50 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
         .wr(fault_clear$wr),
         .ones(fault_clear$ones),
         .pulse(fault_clear$pulse)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$trigger trigger(
+        .clock(trigger$clock),
+        .reset(trigger$reset),
+        .adr(trigger$adr),
+        .wr(trigger$wr),
+        .ones(trigger$ones),
+        .pulse(trigger$pulse)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot snapshot(
+        .clock(snapshot$clock),
+        .reset(snapshot$reset),
+        .take(snapshot$take),
+        .sampled(snapshot$sampled),
+        .position(snapshot$position),
+        .nep(snapshot$nep),
+        .ndt(snapshot$ndt),
+        .speed_n1(snapshot$speed_n1),
+        .speed_n2(snapshot$speed_n2),
+        .speed_n3(snapshot$speed_n3),
+        .speed_pc(snapshot$speed_pc),
+        .speed_et(snapshot$speed_et),
+        .speed_mt(snapshot$speed_mt),
+        .valid(snapshot$valid),
+        .stalled(snapshot$stalled),
+        .direction(snapshot$direction),
+        .seen_position(snapshot$seen_position),
+        .seen_nep(snapshot$seen_nep),
+        .seen_ndt(snapshot$seen_ndt),
+        .seen_n1(snapshot$seen_n1),
+        .seen_n2(snapshot$seen_n2),
+        .seen_n3(snapshot$seen_n3),
+        .seen_pc(snapshot$seen_pc),
+        .seen_et(snapshot$seen_et),
+        .seen_mt(snapshot$seen_mt),
+        .seen_valid(snapshot$seen_valid),
+        .seen_stalled(snapshot$seen_stalled),
+        .seen_direction(snapshot$seen_direction),
+        .count(snapshot$count)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snap_count snap_count(
+        .adr(snap_count$adr),
+        .value(snap_count$value),
+        .rdata(snap_count$rdata)
     );
     encspeed_board_hx8k_breakout$ip$regs$r_position r_position(
         .adr(r_position$adr),
@@ -12348,6 +12442,8 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
         r_cfg_timeout$clock = clock;
         r_cfg_filter$clock = clock;
         fault_clear$clock = clock;
+        trigger$clock = clock;
+        snapshot$clock = clock;
         n1$clock = clock;
         n2$clock = clock;
         n3$clock = clock;
@@ -12397,14 +12493,38 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
         cfg_filter = r_cfg_filter$q;
         cfg_mode = ctrl$q[(0)+:(2)];
         cfg_z_mode = ctrl$q[(2)+:(2)];
+        sampled = ctrl$q[8];
+        hold = ctrl$q[9];
+        trigger$reset = reset;
+        trigger$adr = file$adr;
+        trigger$wr = file$wr;
+        trigger$ones = file$ones;
+        snapshot$reset = reset;
+        take = (sample & (~hold)) | trigger$pulse;
+        snapshot$take = take;
+        snapshot$sampled = sampled;
+        snapshot$position = position;
+        snapshot$nep = nep;
+        snapshot$ndt = ndt;
+        snapshot$speed_n1 = speed_n1;
+        snapshot$speed_n2 = speed_n2;
+        snapshot$speed_n3 = speed_n3;
+        snapshot$speed_pc = speed_pc;
+        snapshot$speed_et = speed_et;
+        snapshot$speed_mt = speed_mt;
+        snapshot$valid = valid;
+        snapshot$stalled = stalled;
+        snapshot$direction = direction;
+        snap_count$adr = file$adr;
+        snap_count$value = snapshot$count;
         status_word = z32;
-        if (valid) begin
+        if (snapshot$seen_valid) begin
             status_word = status_word | s_valid;
         end
-        if (stalled) begin
+        if (snapshot$seen_stalled) begin
             status_word = status_word | s_stalled;
         end
-        if (direction) begin
+        if (snapshot$seen_direction) begin
             status_word = status_word | s_direction;
         end
         if (cfg_error) begin
@@ -12427,13 +12547,13 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
         fault_clear$ones = file$ones;
         clear_faults = fault_clear$pulse;
         r_position$adr = file$adr;
-        r_position$value = position;
+        r_position$value = snapshot$seen_position;
         r_z_latch$adr = file$adr;
         r_z_latch$value = z_latch;
         r_nep$adr = file$adr;
-        r_nep$value = nep;
+        r_nep$value = snapshot$seen_nep;
         r_ndt$adr = file$adr;
-        r_ndt$value = ndt;
+        r_ndt$value = snapshot$seen_ndt;
         glitch$adr = file$adr;
         glitch$value = glitch_count;
         illegal$adr = file$adr;
@@ -12443,28 +12563,28 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
         n1$reset = reset;
         n1$adr = file$adr;
         n1$rd = file$rd;
-        n1$value = speed_n1;
+        n1$value = snapshot$seen_n1;
         n2$reset = reset;
         n2$adr = file$adr;
         n2$rd = file$rd;
-        n2$value = speed_n2;
+        n2$value = snapshot$seen_n2;
         n3$reset = reset;
         n3$adr = file$adr;
         n3$rd = file$rd;
-        n3$value = speed_n3;
+        n3$value = snapshot$seen_n3;
         pc$reset = reset;
         pc$adr = file$adr;
         pc$rd = file$rd;
-        pc$value = speed_pc;
+        pc$value = snapshot$seen_pc;
         et$reset = reset;
         et$adr = file$adr;
         et$rd = file$rd;
-        et$value = speed_et;
+        et$value = snapshot$seen_et;
         mt$reset = reset;
         mt$adr = file$adr;
         mt$rd = file$rd;
-        mt$value = speed_mt;
-        file$cells = id$rdata | version$rdata | param0$rdata | param1$rdata | lines$rdata | dt_default$rdata | timeout_default$rdata | clock_hz$rdata | ctrl$rdata | r_cfg_dt$rdata | r_cfg_timeout$rdata | r_cfg_filter$rdata | status$rdata | r_position$rdata | r_z_latch$rdata | r_nep$rdata | r_ndt$rdata | n1$rdata | n2$rdata | n3$rdata | pc$rdata | et$rdata | mt$rdata | glitch$rdata | illegal$rdata | rev$rdata;
+        mt$value = snapshot$seen_mt;
+        file$cells = id$rdata | version$rdata | param0$rdata | param1$rdata | lines$rdata | dt_default$rdata | timeout_default$rdata | clock_hz$rdata | ctrl$rdata | r_cfg_dt$rdata | r_cfg_timeout$rdata | r_cfg_filter$rdata | status$rdata | r_position$rdata | r_z_latch$rdata | r_nep$rdata | r_ndt$rdata | n1$rdata | n2$rdata | n3$rdata | pc$rdata | et$rdata | mt$rdata | glitch$rdata | illegal$rdata | rev$rdata | snap_count$rdata;
         fault_rose = (fault_illegal & (~prev_illegal$q)) | (fault_overspeed & (~prev_overspeed$q)) | (fault_revolution & (~prev_revolution$q));
         events = z32;
         if (speed_strobe) begin
@@ -12484,6 +12604,9 @@ module encspeed_board_hx8k_breakout$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_
         end
         if (stalled & (~prev_stalled$q)) begin
             events = events | e_stall;
+        end
+        if (take) begin
+            events = events | e_sample;
         end
         file$events = events;
         prev_illegal$d = fault_illegal;
@@ -12533,11 +12656,11 @@ module encspeed_board_hx8k_breakout$ip$regs$ctrl(clock,reset,adr,wr,lanes,ones,r
     input wire  [31:0] lanes;
     input wire  [31:0] ones;
     output reg  [31:0] rdata;
-    output reg  [3:0] q;
+    output reg  [9:0] q;
     
     // Constant declarations
     localparam  offset = 8'h20;
-    localparam  mask = 32'hf;
+    localparam  mask = 32'h30f;
     localparam  z32 = 32'h0;
     
     // Stub signals
@@ -12566,7 +12689,7 @@ module encspeed_board_hx8k_breakout$ip$regs$ctrl(clock,reset,adr,wr,lanes,ones,r
         if (reset) begin
             word$d = z32;
         end
-        q = word$q[(32'h0)+:(4)];
+        q = word$q[(32'h0)+:(10)];
     end
     
 endmodule // encspeed_board_hx8k_breakout$ip$regs$ctrl
@@ -13152,8 +13275,8 @@ module encspeed_board_hx8k_breakout$ip$regs$file$irqs(clock,reset,adr,wr,lanes,o
     // Constant declarations
     localparam  a_enable = 8'h34;
     localparam  a_status = 8'h38;
-    localparam  m_enable = 32'h3f;
-    localparam  m_w1c = 32'h3f;
+    localparam  m_enable = 32'h7f;
+    localparam  m_w1c = 32'h7f;
     localparam  z32 = 32'h0;
     
     // Stub signals
@@ -15988,6 +16111,693 @@ module encspeed_board_hx8k_breakout$ip$regs$rev(adr,value,rdata);
 endmodule // encspeed_board_hx8k_breakout$ip$regs$rev
 
 
+module encspeed_board_hx8k_breakout$ip$regs$snap_count(adr,value,rdata);
+    
+    // Module arguments
+    input wire  [7:0] adr;
+    input wire  [31:0] value;
+    output reg  [31:0] rdata;
+    
+    // Constant declarations
+    localparam  offset = 8'h8c;
+    localparam  w_one = 32'h1;
+    localparam  w_zero = 32'h0;
+    localparam  z32 = 32'h0;
+    localparam  msb32 = 32'h80000000;
+    localparam  sext = 32'h0;
+    localparam  sign = 32'h80000000;
+    localparam  sh_one = 8'h1;
+    localparam  sh_down = 8'h0;
+    localparam  sh_lsb = 8'h0;
+    
+    // Local signals
+    reg  [31:0] t;
+    reg  [31:0] x;
+    
+    // Update code
+    always @(*) begin
+        x = z32;
+        t = value;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_one;
+        if ((t & w_one) != w_zero) begin
+            x = x | msb32;
+        end
+        t = t >> sh_one;
+        x = x >> sh_down;
+        if ((x & sign) != z32) begin
+            x = x | sext;
+        end
+        rdata = z32;
+        if (adr == offset) begin
+            rdata = x << sh_lsb;
+        end
+    end
+    
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snap_count
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot(clock,reset,take,sampled,position,nep,ndt,speed_n1,speed_n2,speed_n3,speed_pc,speed_et,speed_mt,valid,stalled,direction,seen_position,seen_nep,seen_ndt,seen_n1,seen_n2,seen_n3,seen_pc,seen_et,seen_mt,seen_valid,seen_stalled,seen_direction,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  take;
+    input wire  sampled;
+    input wire  [31:0] position;
+    input wire  [23:0] nep;
+    input wire  [23:0] ndt;
+    input wire  [40:0] speed_n1;
+    input wire  [40:0] speed_n2;
+    input wire  [40:0] speed_n3;
+    input wire  [40:0] speed_pc;
+    input wire  [40:0] speed_et;
+    input wire  [40:0] speed_mt;
+    input wire  valid;
+    input wire  stalled;
+    input wire  direction;
+    output reg  [31:0] seen_position;
+    output reg  [23:0] seen_nep;
+    output reg  [23:0] seen_ndt;
+    output reg  [40:0] seen_n1;
+    output reg  [40:0] seen_n2;
+    output reg  [40:0] seen_n3;
+    output reg  [40:0] seen_pc;
+    output reg  [40:0] seen_et;
+    output reg  [40:0] seen_mt;
+    output reg  seen_valid;
+    output reg  seen_stalled;
+    output reg  seen_direction;
+    output reg  [31:0] count;
+    
+    // Constant declarations
+    localparam  zero_c = 32'h0;
+    localparam  zero_n = 24'h0;
+    localparam  zero_s = 41'h0;
+    localparam  zero_32 = 32'h0;
+    localparam  one_32 = 32'h1;
+    
+    // Stub signals
+    reg  [31:0] position_q$d;
+    wire  [31:0] position_q$q;
+    reg  position_q$clock;
+    reg  [23:0] nep_q$d;
+    wire  [23:0] nep_q$q;
+    reg  nep_q$clock;
+    reg  [23:0] ndt_q$d;
+    wire  [23:0] ndt_q$q;
+    reg  ndt_q$clock;
+    reg  [40:0] n1_q$d;
+    wire  [40:0] n1_q$q;
+    reg  n1_q$clock;
+    reg  [40:0] n2_q$d;
+    wire  [40:0] n2_q$q;
+    reg  n2_q$clock;
+    reg  [40:0] n3_q$d;
+    wire  [40:0] n3_q$q;
+    reg  n3_q$clock;
+    reg  [40:0] pc_q$d;
+    wire  [40:0] pc_q$q;
+    reg  pc_q$clock;
+    reg  [40:0] et_q$d;
+    wire  [40:0] et_q$q;
+    reg  et_q$clock;
+    reg  [40:0] mt_q$d;
+    wire  [40:0] mt_q$q;
+    reg  mt_q$clock;
+    reg  valid_q$d;
+    wire  valid_q$q;
+    reg  valid_q$clock;
+    reg  stalled_q$d;
+    wire  stalled_q$q;
+    reg  stalled_q$clock;
+    reg  direction_q$d;
+    wire  direction_q$q;
+    reg  direction_q$clock;
+    reg  [31:0] count_q$d;
+    wire  [31:0] count_q$q;
+    reg  count_q$clock;
+    
+    // Sub module instances
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$position_q position_q(
+        .d(position_q$d),
+        .q(position_q$q),
+        .clock(position_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$nep_q nep_q(
+        .d(nep_q$d),
+        .q(nep_q$q),
+        .clock(nep_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$ndt_q ndt_q(
+        .d(ndt_q$d),
+        .q(ndt_q$q),
+        .clock(ndt_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$n1_q n1_q(
+        .d(n1_q$d),
+        .q(n1_q$q),
+        .clock(n1_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$n2_q n2_q(
+        .d(n2_q$d),
+        .q(n2_q$q),
+        .clock(n2_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$n3_q n3_q(
+        .d(n3_q$d),
+        .q(n3_q$q),
+        .clock(n3_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$pc_q pc_q(
+        .d(pc_q$d),
+        .q(pc_q$q),
+        .clock(pc_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$et_q et_q(
+        .d(et_q$d),
+        .q(et_q$q),
+        .clock(et_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$mt_q mt_q(
+        .d(mt_q$d),
+        .q(mt_q$q),
+        .clock(mt_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$valid_q valid_q(
+        .d(valid_q$d),
+        .q(valid_q$q),
+        .clock(valid_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$stalled_q stalled_q(
+        .d(stalled_q$d),
+        .q(stalled_q$q),
+        .clock(stalled_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$direction_q direction_q(
+        .d(direction_q$d),
+        .q(direction_q$q),
+        .clock(direction_q$clock)
+    );
+    encspeed_board_hx8k_breakout$ip$regs$snapshot$count_q count_q(
+        .d(count_q$d),
+        .q(count_q$q),
+        .clock(count_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        position_q$clock = clock;
+        nep_q$clock = clock;
+        ndt_q$clock = clock;
+        n1_q$clock = clock;
+        n2_q$clock = clock;
+        n3_q$clock = clock;
+        pc_q$clock = clock;
+        et_q$clock = clock;
+        mt_q$clock = clock;
+        valid_q$clock = clock;
+        stalled_q$clock = clock;
+        direction_q$clock = clock;
+        count_q$clock = clock;
+        position_q$d = position_q$q;
+        nep_q$d = nep_q$q;
+        ndt_q$d = ndt_q$q;
+        n1_q$d = n1_q$q;
+        n2_q$d = n2_q$q;
+        n3_q$d = n3_q$q;
+        pc_q$d = pc_q$q;
+        et_q$d = et_q$q;
+        mt_q$d = mt_q$q;
+        valid_q$d = valid_q$q;
+        stalled_q$d = stalled_q$q;
+        direction_q$d = direction_q$q;
+        count_q$d = count_q$q;
+        if (take) begin
+            position_q$d = position;
+            nep_q$d = nep;
+            ndt_q$d = ndt;
+            n1_q$d = speed_n1;
+            n2_q$d = speed_n2;
+            n3_q$d = speed_n3;
+            pc_q$d = speed_pc;
+            et_q$d = speed_et;
+            mt_q$d = speed_mt;
+            valid_q$d = valid;
+            stalled_q$d = stalled;
+            direction_q$d = direction;
+            count_q$d = count_q$q + one_32;
+        end
+        if (reset) begin
+            position_q$d = zero_c;
+            nep_q$d = zero_n;
+            ndt_q$d = zero_n;
+            n1_q$d = zero_s;
+            n2_q$d = zero_s;
+            n3_q$d = zero_s;
+            pc_q$d = zero_s;
+            et_q$d = zero_s;
+            mt_q$d = zero_s;
+            valid_q$d = 1'b0;
+            stalled_q$d = 1'b0;
+            direction_q$d = 1'b0;
+            count_q$d = zero_32;
+        end
+        count = count_q$q;
+        if (sampled) begin
+            seen_position = position_q$q;
+            seen_nep = nep_q$q;
+            seen_ndt = ndt_q$q;
+            seen_n1 = n1_q$q;
+            seen_n2 = n2_q$q;
+            seen_n3 = n3_q$q;
+            seen_pc = pc_q$q;
+            seen_et = et_q$q;
+            seen_mt = mt_q$q;
+            seen_valid = valid_q$q;
+            seen_stalled = stalled_q$q;
+            seen_direction = direction_q$q;
+        end
+        else begin
+            seen_position = position;
+            seen_nep = nep;
+            seen_ndt = ndt;
+            seen_n1 = speed_n1;
+            seen_n2 = speed_n2;
+            seen_n3 = speed_n3;
+            seen_pc = speed_pc;
+            seen_et = speed_et;
+            seen_mt = speed_mt;
+            seen_valid = valid;
+            seen_stalled = stalled;
+            seen_direction = direction;
+        end
+    end
+    
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$count_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$count_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$direction_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$direction_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$et_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$et_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$mt_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$mt_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$n1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$n1_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$n2_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$n2_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$n3_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$n3_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$ndt_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$ndt_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$nep_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$nep_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$pc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$pc_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$position_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$position_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$stalled_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$stalled_q
+
+
+module encspeed_board_hx8k_breakout$ip$regs$snapshot$valid_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$snapshot$valid_q
+
+
 module encspeed_board_hx8k_breakout$ip$regs$status(adr,value,rdata);
     
     // Module arguments
@@ -16210,6 +17020,66 @@ module encspeed_board_hx8k_breakout$ip$regs$timeout_default(adr,rdata);
 endmodule // encspeed_board_hx8k_breakout$ip$regs$timeout_default
 
 
+module encspeed_board_hx8k_breakout$ip$regs$trigger(clock,reset,adr,wr,ones,pulse);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  [7:0] adr;
+    input wire  wr;
+    input wire  [31:0] ones;
+    output reg  pulse;
+    
+    // Constant declarations
+    localparam  offset = 8'h20;
+    localparam  mask = 32'h400;
+    localparam  z32 = 32'h0;
+    
+    // Stub signals
+    reg  fired$d;
+    wire  fired$q;
+    reg  fired$clock;
+    
+    // Sub module instances
+    encspeed_board_hx8k_breakout$ip$regs$trigger$fired fired(
+        .d(fired$d),
+        .q(fired$q),
+        .clock(fired$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        fired$clock = clock;
+        fired$d = fired$q;
+        fired$d = wr & (adr == offset) & ((ones & mask) != z32);
+        if (reset) begin
+            fired$d = 1'b0;
+        end
+        pulse = fired$q;
+    end
+    
+endmodule // encspeed_board_hx8k_breakout$ip$regs$trigger
+
+
+module encspeed_board_hx8k_breakout$ip$regs$trigger$fired(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_board_hx8k_breakout$ip$regs$trigger$fired
+
+
 module encspeed_board_hx8k_breakout$ip$regs$version(adr,rdata);
     
     // Module arguments
@@ -16218,7 +17088,7 @@ module encspeed_board_hx8k_breakout$ip$regs$version(adr,rdata);
     
     // Constant declarations
     localparam  offset = 8'h4;
-    localparam  value = 32'h10000;
+    localparam  value = 32'h10001;
     localparam  z32 = 32'h0;
     
     // Update code

@@ -11,6 +11,7 @@ encspeed_ecc_wb u_encspeed_ecc_wb (
     .enc_a    (enc_a   ), // input: encoder channel A, asynchronous (two-flop synchronised inside)
     .enc_b    (enc_b   ), // input: encoder channel B, asynchronous; forward = A leads B by 90 degrees
     .enc_z    (enc_z   ), // input: encoder index Z, asynchronous
+    .sample   (sample  ), // input: synchronous strobe: at the edge that samples it high (unless CTRL.HOLD) the register file takes a coherent snapshot of position, nep, ndt, the speeds and valid/stalled/direction as the core outputs them in that cycle (CTRL.SAMPLED reads it); tie to 0 if unused
     .wb_cyc_i (wb_cyc_i), // input: Wishbone B4 classic: bus cycle
     .wb_stb_i (wb_stb_i), // input: Wishbone: strobe (this slave is addressed)
     .wb_we_i  (wb_we_i ), // input: Wishbone: 1 = write, 0 = read

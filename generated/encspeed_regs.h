@@ -17,12 +17,14 @@
  * Offsets are in bytes from the base of the register window. Read a speed's
  * _LO register, then its _HI register: the LO read latches HI (coherent pair).
  * Writing 1 to any STATUS FAULT_* bit clears all three fault flags.
+ * The sample input (or a write of 1 to CTRL.TRIGGER) takes a coherent snapshot;
+ * with CTRL.SAMPLED = 1 the value registers read it (CTRL.HOLD: sample ignored).
  */
 #ifndef ENCSPEED_REGS_H
 #define ENCSPEED_REGS_H
 
 #define ENCSPEED_ID_MAGIC                            0x454E4353u /* ASCII "ENCS" */
-#define ENCSPEED_MAP_VERSION                         0x00010000u /* major 31:16, minor 15:0 */
+#define ENCSPEED_MAP_VERSION                         0x00010001u /* major 31:16, minor 15:0 */
 #define ENCSPEED_ADDR_BITS                           8u /* wb_adr_i width (byte address) */
 #define ENCSPEED_SPAN_BYTES                          0x100u /* bytes decoded */
 #define ENCSPEED_COUNTER_BITS                        24u /* N */
@@ -45,7 +47,7 @@
 
 /* VERSION (RO): Register map version */
 #define ENCSPEED_VERSION_OFFSET                      0x04u
-#define ENCSPEED_VERSION_RESET                       0x00010000u
+#define ENCSPEED_VERSION_RESET                       0x00010001u
 #define ENCSPEED_VERSION_MINOR_SHIFT                 0u /* [15:0] RO: minor version (compatible additions) */
 #define ENCSPEED_VERSION_MINOR_WIDTH                 16u
 #define ENCSPEED_VERSION_MINOR_MASK                  0x0000FFFFu
@@ -107,7 +109,7 @@
 #define ENCSPEED_CLOCK_HZ_VALUE_WIDTH                32u
 #define ENCSPEED_CLOCK_HZ_VALUE_MASK                 0xFFFFFFFFu
 
-/* CTRL (RW): Decoding modes (drive cfg_mode, cfg_z_mode) */
+/* CTRL (RW/W1P): Decoding modes (drive cfg_mode, cfg_z_mode) and the snapshot */
 #define ENCSPEED_CTRL_OFFSET                         0x20u
 #define ENCSPEED_CTRL_RESET                          0x00000000u
 #define ENCSPEED_CTRL_MODE_SHIFT                     0u /* [1:0] RW: cfg_mode: 0 x1, 1 x2, 2 x4, 3 invalid (cfg_error) */
@@ -116,6 +118,15 @@
 #define ENCSPEED_CTRL_Z_MODE_SHIFT                   2u /* [3:2] RW: cfg_z_mode: 0 ignore Z, 1 Z resets position, 2 Z latches position, 3 latch then reset */
 #define ENCSPEED_CTRL_Z_MODE_WIDTH                   2u
 #define ENCSPEED_CTRL_Z_MODE_MASK                    0x0000000Cu
+#define ENCSPEED_CTRL_SAMPLED_SHIFT                  8u /* [8] RW: 1: POSITION, NEP, NDT, SPEED_* and STATUS.VALID, STALLED, DIRECTION read the snapshot; 0: live */
+#define ENCSPEED_CTRL_SAMPLED_WIDTH                  1u
+#define ENCSPEED_CTRL_SAMPLED_MASK                   0x00000100u
+#define ENCSPEED_CTRL_HOLD_SHIFT                     9u /* [9] RW: 1: the sample input is ignored (the snapshot stays until TRIGGER) */
+#define ENCSPEED_CTRL_HOLD_WIDTH                     1u
+#define ENCSPEED_CTRL_HOLD_MASK                      0x00000200u
+#define ENCSPEED_CTRL_TRIGGER_SHIFT                  10u /* [10] W1P: write 1: take a snapshot at the edge after the write edge */
+#define ENCSPEED_CTRL_TRIGGER_WIDTH                  1u
+#define ENCSPEED_CTRL_TRIGGER_MASK                   0x00000400u
 
 /* CFG_DT (RW): dt (drives cfg_dt) */
 #define ENCSPEED_CFG_DT_OFFSET                       0x24u
@@ -138,7 +149,7 @@
 #define ENCSPEED_CFG_FILTER_VALUE_WIDTH              16u
 #define ENCSPEED_CFG_FILTER_VALUE_MASK               0x0000FFFFu
 
-/* STATUS (RO/W1C): Core status levels (live) and sticky faults; a write with a 1 in any FAULT_* bit (byte lane 0) pulses clear_faults, which clears all three fault flags */
+/* STATUS (RO/W1C): Core status levels (live; VALID, STALLED, DIRECTION the snapshot's with CTRL.SAMPLED) and sticky faults; a write with a 1 in any FAULT_* bit (byte lane 0) pulses clear_faults, which clears all three fault flags */
 #define ENCSPEED_STATUS_OFFSET                       0x30u
 #define ENCSPEED_STATUS_VALID_SHIFT                  0u /* [0] RO: valid: speed_n3 holds a measurement, not stalled, legal configuration */
 #define ENCSPEED_STATUS_VALID_WIDTH                  1u
@@ -183,6 +194,9 @@
 #define ENCSPEED_IRQ_ENABLE_STALL_SHIFT              5u /* [5] RW: Enable: a rising edge of stalled */
 #define ENCSPEED_IRQ_ENABLE_STALL_WIDTH              1u
 #define ENCSPEED_IRQ_ENABLE_STALL_MASK               0x00000020u
+#define ENCSPEED_IRQ_ENABLE_SAMPLE_SHIFT             6u /* [6] RW: Enable: a snapshot was taken (sample or CTRL.TRIGGER) */
+#define ENCSPEED_IRQ_ENABLE_SAMPLE_WIDTH             1u
+#define ENCSPEED_IRQ_ENABLE_SAMPLE_MASK              0x00000040u
 
 /* IRQ_STATUS (W1C): Interrupt events, latched whether enabled or not; a written 1 clears the bit; an event at the same edge wins */
 #define ENCSPEED_IRQ_STATUS_OFFSET                   0x38u
@@ -205,10 +219,13 @@
 #define ENCSPEED_IRQ_STATUS_STALL_SHIFT              5u /* [5] W1C: Pending: a rising edge of stalled */
 #define ENCSPEED_IRQ_STATUS_STALL_WIDTH              1u
 #define ENCSPEED_IRQ_STATUS_STALL_MASK               0x00000020u
+#define ENCSPEED_IRQ_STATUS_SAMPLE_SHIFT             6u /* [6] W1C: Pending: a snapshot was taken (sample or CTRL.TRIGGER) */
+#define ENCSPEED_IRQ_STATUS_SAMPLE_WIDTH             1u
+#define ENCSPEED_IRQ_STATUS_SAMPLE_MASK              0x00000040u
 
-/* POSITION (RO): position */
+/* POSITION (RO): position (the snapshot's with CTRL.SAMPLED) */
 #define ENCSPEED_POSITION_OFFSET                     0x40u
-#define ENCSPEED_POSITION_VALUE_SHIFT                0u /* [31:0] RO: position, steps (modulo the steps per revolution) (unsigned) */
+#define ENCSPEED_POSITION_VALUE_SHIFT                0u /* [31:0] RO: position (the snapshot's with CTRL.SAMPLED), steps (modulo the steps per revolution) (unsigned) */
 #define ENCSPEED_POSITION_VALUE_WIDTH                32u
 #define ENCSPEED_POSITION_VALUE_MASK                 0xFFFFFFFFu
 
@@ -218,19 +235,19 @@
 #define ENCSPEED_Z_LATCH_VALUE_WIDTH                 32u
 #define ENCSPEED_Z_LATCH_VALUE_MASK                  0xFFFFFFFFu
 
-/* NEP (RO): Nep1: encoder pulses of the last window */
+/* NEP (RO): Nep1: encoder pulses of the last window (the snapshot's with CTRL.SAMPLED) */
 #define ENCSPEED_NEP_OFFSET                          0x48u
-#define ENCSPEED_NEP_VALUE_SHIFT                     0u /* [23:0] RO: Nep1: encoder pulses of the last window, pulses (unsigned) */
+#define ENCSPEED_NEP_VALUE_SHIFT                     0u /* [23:0] RO: Nep1: encoder pulses of the last window (the snapshot's with CTRL.SAMPLED), pulses (unsigned) */
 #define ENCSPEED_NEP_VALUE_WIDTH                     24u
 #define ENCSPEED_NEP_VALUE_MASK                      0x00FFFFFFu
 
-/* NDT (RO): Ndt1: dt intervals between the last two pulses */
+/* NDT (RO): Ndt1: dt intervals between the last two pulses (the snapshot's with CTRL.SAMPLED) */
 #define ENCSPEED_NDT_OFFSET                          0x4Cu
-#define ENCSPEED_NDT_VALUE_SHIFT                     0u /* [23:0] RO: Ndt1: dt intervals between the last two pulses, dt intervals (unsigned) */
+#define ENCSPEED_NDT_VALUE_SHIFT                     0u /* [23:0] RO: Ndt1: dt intervals between the last two pulses (the snapshot's with CTRL.SAMPLED), dt intervals (unsigned) */
 #define ENCSPEED_NDT_VALUE_WIDTH                     24u
 #define ENCSPEED_NDT_VALUE_MASK                      0x00FFFFFFu
 
-/* SPEED_N1_LO (RO): speed_n1 (live), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_N1_HI */
+/* SPEED_N1_LO (RO): speed_n1 (live; the snapshot's with CTRL.SAMPLED), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_N1_HI */
 #define ENCSPEED_SPEED_N1_LO_OFFSET                  0x50u
 #define ENCSPEED_SPEED_N1_LO_VALUE_SHIFT             0u /* [31:0] RO: bits 31:0 of sign-extended speed_n1 */
 #define ENCSPEED_SPEED_N1_LO_VALUE_WIDTH             32u
@@ -243,7 +260,7 @@
 #define ENCSPEED_SPEED_N1_HI_VALUE_WIDTH             32u
 #define ENCSPEED_SPEED_N1_HI_VALUE_MASK              0xFFFFFFFFu
 
-/* SPEED_N2_LO (RO): speed_n2 (live), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_N2_HI */
+/* SPEED_N2_LO (RO): speed_n2 (live; the snapshot's with CTRL.SAMPLED), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_N2_HI */
 #define ENCSPEED_SPEED_N2_LO_OFFSET                  0x58u
 #define ENCSPEED_SPEED_N2_LO_VALUE_SHIFT             0u /* [31:0] RO: bits 31:0 of sign-extended speed_n2 */
 #define ENCSPEED_SPEED_N2_LO_VALUE_WIDTH             32u
@@ -256,7 +273,7 @@
 #define ENCSPEED_SPEED_N2_HI_VALUE_WIDTH             32u
 #define ENCSPEED_SPEED_N2_HI_VALUE_MASK              0xFFFFFFFFu
 
-/* SPEED_N3_LO (RO): speed_n3 (live), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_N3_HI */
+/* SPEED_N3_LO (RO): speed_n3 (live; the snapshot's with CTRL.SAMPLED), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_N3_HI */
 #define ENCSPEED_SPEED_N3_LO_OFFSET                  0x60u
 #define ENCSPEED_SPEED_N3_LO_VALUE_SHIFT             0u /* [31:0] RO: bits 31:0 of sign-extended speed_n3 */
 #define ENCSPEED_SPEED_N3_LO_VALUE_WIDTH             32u
@@ -269,7 +286,7 @@
 #define ENCSPEED_SPEED_N3_HI_VALUE_WIDTH             32u
 #define ENCSPEED_SPEED_N3_HI_VALUE_MASK              0xFFFFFFFFu
 
-/* SPEED_PC_LO (RO): speed_pc (live), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_PC_HI */
+/* SPEED_PC_LO (RO): speed_pc (live; the snapshot's with CTRL.SAMPLED), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_PC_HI */
 #define ENCSPEED_SPEED_PC_LO_OFFSET                  0x68u
 #define ENCSPEED_SPEED_PC_LO_VALUE_SHIFT             0u /* [31:0] RO: bits 31:0 of sign-extended speed_pc */
 #define ENCSPEED_SPEED_PC_LO_VALUE_WIDTH             32u
@@ -282,7 +299,7 @@
 #define ENCSPEED_SPEED_PC_HI_VALUE_WIDTH             32u
 #define ENCSPEED_SPEED_PC_HI_VALUE_MASK              0xFFFFFFFFu
 
-/* SPEED_ET_LO (RO): speed_et (live), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_ET_HI */
+/* SPEED_ET_LO (RO): speed_et (live; the snapshot's with CTRL.SAMPLED), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_ET_HI */
 #define ENCSPEED_SPEED_ET_LO_OFFSET                  0x70u
 #define ENCSPEED_SPEED_ET_LO_VALUE_SHIFT             0u /* [31:0] RO: bits 31:0 of sign-extended speed_et */
 #define ENCSPEED_SPEED_ET_LO_VALUE_WIDTH             32u
@@ -295,7 +312,7 @@
 #define ENCSPEED_SPEED_ET_HI_VALUE_WIDTH             32u
 #define ENCSPEED_SPEED_ET_HI_VALUE_MASK              0xFFFFFFFFu
 
-/* SPEED_MT_LO (RO): speed_mt (live), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_MT_HI */
+/* SPEED_MT_LO (RO): speed_mt (live; the snapshot's with CTRL.SAMPLED), Q24.16 in units of w_lim, sign-extended to 64 bits: low word; a read latches the high word into SPEED_MT_HI */
 #define ENCSPEED_SPEED_MT_LO_OFFSET                  0x78u
 #define ENCSPEED_SPEED_MT_LO_VALUE_SHIFT             0u /* [31:0] RO: bits 31:0 of sign-extended speed_mt */
 #define ENCSPEED_SPEED_MT_LO_VALUE_WIDTH             32u
@@ -325,5 +342,11 @@
 #define ENCSPEED_REV_ERROR_COUNT_VALUE_SHIFT         0u /* [15:0] RO: revolutions with the wrong count (saturating), revolutions (unsigned) */
 #define ENCSPEED_REV_ERROR_COUNT_VALUE_WIDTH         16u
 #define ENCSPEED_REV_ERROR_COUNT_VALUE_MASK          0x0000FFFFu
+
+/* SNAP_COUNT (RO): snapshots taken since reset */
+#define ENCSPEED_SNAP_COUNT_OFFSET                   0x8Cu
+#define ENCSPEED_SNAP_COUNT_VALUE_SHIFT              0u /* [31:0] RO: snapshots taken since reset, snapshots, modulo 2^32 (unsigned) */
+#define ENCSPEED_SNAP_COUNT_VALUE_WIDTH              32u
+#define ENCSPEED_SNAP_COUNT_VALUE_MASK               0xFFFFFFFFu
 
 #endif /* ENCSPEED_REGS_H */

@@ -84,6 +84,8 @@ impl Bench {
             enc_a: self.levels.a,
             enc_b: self.levels.b,
             enc_z: self.levels.z,
+            // A strobe now and then: the noise reads SNAP_COUNT (0x8C) among its offsets.
+            sample: k % 61 == 7,
             bus,
         };
         let o = self.model.step(&inp);

@@ -325,7 +325,7 @@ fn repository_root() -> PathBuf {
 }
 
 /// FuseSoC finds `encspeed.core` at the repository root and its `lint_<top>` target lints
-/// each shipped top with its shipped waivers, clean (docs/integration.md). The same target
+/// each shipped top (the board tops too) with its shipped waivers, clean (docs/integration.md). The same target
 /// with the waivers taken out of a copy of the core file fails: the target really runs
 /// `verilator --lint-only -Wall` and FuseSoC reports its failure.
 #[test]
@@ -335,8 +335,10 @@ fn fusesoc_lints_every_shipped_top_and_fails_without_the_waivers() {
     // below (and FuseSoC's own build trees) would be a second `encspeed:ip:encspeed`.
     std::fs::write(tools::target_dir().join("FUSESOC_IGNORE"), "").unwrap();
     let build = tools::work_dir("fusesoc", "build").unwrap();
-    for top in Top::ALL {
-        let target = format!("lint_{}", top.module().trim_start_matches("encspeed_"));
+    let tops = Top::ALL.map(|t| t.module().to_string());
+    let boards = golden::board::boards::Board::ALL.map(|b| b.module());
+    for module in tops.iter().chain(&boards) {
+        let target = format!("lint_{}", module.trim_start_matches("encspeed_"));
         tools::fusesoc_run(&repository_root(), &build.join(&target), &target, core)
             .unwrap_or_else(|e| panic!("{target}: {e}"));
     }
@@ -364,6 +366,16 @@ fn fusesoc_builds_each_board_bitstream_at_the_board_clock() {
     use golden::board::boards::Board;
     let core = "encspeed:ip:encspeed";
     std::fs::write(tools::target_dir().join("FUSESOC_IGNORE"), "").unwrap();
+    // Each board target places for the board's device at its clock (the golden board data).
+    let text = std::fs::read_to_string(repository_root().join("encspeed.core")).unwrap();
+    for board in Board::ALL {
+        let options = format!(
+            "nextpnr_options: [{}, --freq, \"{}\"]",
+            board.nextpnr_device().join(", "),
+            board.clock_hz() / 1_000_000
+        );
+        assert!(text.contains(&options), "{}: {options}", board.name());
+    }
     let build = tools::work_dir("fusesoc", "boards").unwrap();
     // The two boards side by side: each flow is single-threaded.
     let runs: Vec<(Board, std::thread::JoinHandle<Result<String, String>>)> = Board::ALL

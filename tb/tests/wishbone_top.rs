@@ -85,6 +85,9 @@ enum BusOp {
     Status(u32, u8),
     IrqEnable(u32),
     IrqClear(u32),
+    /// Write `CTRL`'s byte lane 1 alone: `SAMPLED` (bit 0 of the value), `HOLD` (bit 1),
+    /// `TRIGGER` (bit 2).
+    Snap(u32),
     Read(u32),
     /// Read a speed's LO then its HI register.
     Pair(usize),
@@ -127,7 +130,8 @@ fn config_op() -> impl Strategy<Value = BusOp> {
         3 => dt_value().prop_map(BusOp::Dt),
         1 => prop_oneof![Just(0u32), 1u32..30].prop_map(BusOp::Timeout),
         1 => (0u32..5).prop_map(BusOp::Filter),
-        1 => (0u32..64).prop_map(BusOp::IrqEnable),
+        1 => (0u32..128).prop_map(BusOp::IrqEnable),
+        2 => (0u32..8).prop_map(BusOp::Snap),
     ]
 }
 
@@ -260,6 +264,10 @@ struct Coverage {
     fault_cycles: usize,
     mode_changes: usize,
     index: usize,
+    /// Snapshots taken (by `sample` or `CTRL.TRIGGER`).
+    snapshots: usize,
+    /// Reads executed while `CTRL.SAMPLED`.
+    sampled_reads: usize,
 }
 
 impl Coverage {
@@ -275,6 +283,8 @@ impl Coverage {
         self.fault_cycles += o.fault_cycles;
         self.mode_changes += o.mode_changes;
         self.index += o.index;
+        self.snapshots += o.snapshots;
+        self.sampled_reads += o.sampled_reads;
     }
 }
 
@@ -292,6 +302,8 @@ struct Trace {
 struct Master {
     model: WbTopModel,
     enc: Encoder,
+    /// Draws the `sample` strobes (about one cycle in 40).
+    strobes: SplitMix,
     t: Trace,
 }
 
@@ -303,9 +315,11 @@ impl Master {
             enc_a,
             enc_b,
             enc_z,
+            sample: self.strobes.next().is_multiple_of(40),
             bus,
         };
         let mode_before = self.model.regs_outputs().cfg_mode;
+        let snapshots_before = self.model.regs().snapshot().count;
         let o = self.model.step(&inp);
         let (c, r) = (self.model.core_outputs(), self.model.regs_outputs());
         let cov = &mut self.t.cov;
@@ -317,6 +331,8 @@ impl Master {
         cov.fault_cycles += usize::from(c.fault_illegal | c.fault_overspeed | c.fault_revolution);
         cov.mode_changes += usize::from(r.cfg_mode != mode_before);
         cov.index += usize::from(c.index);
+        cov.snapshots +=
+            usize::from(!reset && self.model.regs().snapshot().count != snapshots_before);
         self.t.inputs.push(inp);
         self.t.outs.push(o);
         self.t.core.push(c);
@@ -344,9 +360,11 @@ impl Master {
             !self.model.outputs().wb_ack_o,
             "an access starts with ack low"
         );
+        let sampled = self.model.regs().sampled();
         self.cycle(false, bus);
         let o = self.cycle(false, bus);
         assert!(!o.wb_ack_o, "one ack per access");
+        self.t.cov.sampled_reads += usize::from(sampled && !we);
         let ack = self.t.outs[self.t.outs.len() - 2];
         assert!(ack.wb_ack_o, "ack in the cycle after the request edge");
         if we {
@@ -382,6 +400,9 @@ impl Master {
             }
             BusOp::IrqEnable(v) => self.write(regmap::IRQ_ENABLE, v),
             BusOp::IrqClear(v) => self.write(regmap::IRQ_STATUS, v),
+            BusOp::Snap(v) => {
+                self.access(true, regmap::CTRL, v << regmap::CTRL_SAMPLED_LSB, 0b0010);
+            }
             BusOp::Read(a) => {
                 self.access(false, a, 0, 0);
             }
@@ -405,6 +426,7 @@ fn trace(p: &Params, case: &Case) -> Trace {
     let mut m = Master {
         model: WbTopModel::new(p),
         enc: Encoder::new(&case.segments, p.lines(), case.seed),
+        strobes: SplitMix(case.seed ^ 0x5a3b_1e5e),
         t: Trace::default(),
     };
     for _ in 0..3 {
@@ -525,6 +547,10 @@ fn covered(cov: &Coverage, cases: u32, small: bool) -> Result<(), String> {
         (cov.valid_cycles > 0 && cov.irq_cycles > 0, "valid and irq"),
         (cov.mode_changes >= n / 2, "mode changes"),
         (
+            cov.snapshots >= n && cov.sampled_reads >= n / 2,
+            "snapshots taken and read",
+        ),
+        (
             !small || (cov.fault_cycles > 0 && cov.clear_faults > 0 && cov.index > 0),
             "faults, clears and index edges",
         ),
@@ -627,6 +653,7 @@ impl Device {
             enc_a: m < self.period / 2,
             enc_b: (m + self.period - self.period / 4) % self.period < self.period / 2,
             enc_z: false,
+            sample: false,
             bus,
         };
         self.cycle += 1;

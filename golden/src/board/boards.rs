@@ -99,16 +99,6 @@ impl Board {
     pub fn constraints_file(self) -> String {
         format!("constraints/{}.pcf", self.name())
     }
-
-    /// What the board's four LEDs show, `led[0]` first.
-    pub fn led_meaning() -> [&'static str; 4] {
-        [
-            "heartbeat (about 0.7 Hz: the bitstream runs)",
-            "irq (the IRQ_ENABLE'd events of IRQ_STATUS)",
-            "encoder A",
-            "encoder B",
-        ]
-    }
 }
 
 port_struct! {
@@ -132,7 +122,8 @@ port_struct! {
     pub struct BoardOutputs {
         /// Serial line to the host.
         pub tx: bool,
-        /// The four LEDs ([`Board::led_meaning`]), `led[0]` in bit 0.
+        /// The four LEDs, `led[0]` in bit 0: heartbeat (bit 23 of a free-running counter,
+        /// about 0.7 Hz at 12 MHz: the bitstream runs), irq, encoder A, encoder B.
         pub led: u8,
     }
 }

@@ -2,8 +2,8 @@
 //! The host side of a board top: [`Bridge`] speaks the bridge's protocol
 //! ([`crate::board::protocol`]) over any byte stream (a serial port in `encspeed monitor`,
 //! a simulated board in the benches); [`identify`] reads what the IP was generated with
-//! from its own registers, and [`sample`] reads position, status and speeds, scaled to
-//! r/min with that. Nothing here knows the board: it works on any `encspeed_wb` behind the
+//! from its own registers, and [`sample`] takes a snapshot and reads its position, status
+//! and speeds, scaled to r/min with that. Nothing here knows the board: it works on any `encspeed_wb` behind the
 //! bridge.
 
 use crate::board::protocol::{parse_response, Command, Response, ResponseError};
@@ -140,6 +140,8 @@ pub fn identify<T: Read + Write>(bridge: &mut Bridge<T>) -> Result<DeviceInfo, H
 /// One reading of the IP: the registers a drive engineer watches.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sample {
+    /// `SNAP_COUNT` after the sample's trigger: which snapshot the values are.
+    pub snapshot: u32,
     /// `POSITION`.
     pub position: u32,
     /// `STATUS`, as read (bits: `VALID` 0, `STALLED` 1, `DIRECTION` 2 (1 forward), `CFG_ERROR` 3,
@@ -155,11 +157,21 @@ pub struct Sample {
 /// The speeds' names, in [`Sample::speeds_raw`]'s order.
 pub const SPEED_NAMES: [&str; 6] = ["n1", "n2", "n3", "pc", "et", "mt"];
 
-/// Read one [`Sample`]: position, status, dt, then each speed LO before HI.
+/// `CTRL`'s byte lane 1 as [`sample`] writes it: `SAMPLED`, `HOLD` and `TRIGGER`.
+pub const SNAPSHOT_NOW: u32 = (1 << regmap::CTRL_SAMPLED_LSB)
+    | (1 << regmap::CTRL_HOLD_LSB)
+    | (1 << regmap::CTRL_TRIGGER_LSB);
+
+/// Take a snapshot and read it as one [`Sample`]: a write of [`SNAPSHOT_NOW`] to `CTRL`'s
+/// byte lane 1 alone (the modes in lane 0 stay) takes the snapshot and keeps it (`HOLD`)
+/// for the reads that follow, which read it (`SAMPLED`): `SNAP_COUNT`, position, status,
+/// dt, then each speed LO before HI, all of one clock cycle however slow the line.
 pub fn sample<T: Read + Write>(
     bridge: &mut Bridge<T>,
     info: &DeviceInfo,
 ) -> Result<Sample, HostError> {
+    bridge.write(regmap::CTRL, SNAPSHOT_NOW, 0b0010)?;
+    let snapshot = bridge.read(regmap::SNAP_COUNT)?;
     let position = bridge.read(regmap::POSITION)?;
     let status = bridge.read(regmap::STATUS)?;
     let cfg_dt = bridge.read(regmap::CFG_DT)?;
@@ -168,6 +180,7 @@ pub fn sample<T: Read + Write>(
         speeds_raw[k] = bridge.read_speed(*lo, *hi)?;
     }
     Ok(Sample {
+        snapshot,
         position,
         status,
         dt_cycles: if cfg_dt == 0 { info.dt_default } else { cfg_dt },
@@ -282,6 +295,7 @@ mod tests {
             dt_default: 12_000,
         };
         let s = Sample {
+            snapshot: 1,
             position: 7,
             status: 0b101,
             dt_cycles: 12_000,

@@ -42,6 +42,22 @@
 //! edge wins. `irq` = (`IRQ_STATUS` & `IRQ_ENABLE`) ≠ 0, a function of registers only (no
 //! path from any input to `irq`).
 //!
+//! # Snapshot
+//!
+//! The `sample` input (synchronous, active high; say the PWM carrier's peak) takes a
+//! **snapshot**: at the edge that samples it high, the register file stores `position`,
+//! `nep`, `ndt`, the six speeds and the levels `valid`, `stalled`, `direction` as the core
+//! outputs them in that cycle (the values a read requested at that edge would return), and
+//! counts it in `SNAP_COUNT` (modulo 2^32) and raises the `SAMPLE` interrupt event. A
+//! write of 1 to `CTRL.TRIGGER` takes one the same way at the edge after the write edge
+//! (the ack cycle's edge), whatever `sample` and `CTRL.HOLD`; `CTRL.HOLD` = 1 makes the
+//! file ignore `sample`. With `CTRL.SAMPLED` = 1, `POSITION`, `NEP`, `NDT`, the `SPEED_*`
+//! pairs and `STATUS`'s `VALID`, `STALLED`, `DIRECTION` read the snapshot instead of the live
+//! values (everything else stays live; a speed's LO read still latches its HI from the
+//! snapshot). The snapshot is coherent: every value comes from one cycle. To read it whole
+//! while strobes go on, either set `HOLD` (and use `TRIGGER` for a snapshot of one's own) or
+//! read `SNAP_COUNT` before and after and retry if it moved. After reset the snapshot is 0.
+//!
 //! # Reset
 //!
 //! Synchronous, active high, the core's reset: every register of the file returns to its
@@ -57,7 +73,7 @@ use std::fmt::Write;
 pub const ID_MAGIC: u32 = u32::from_be_bytes(*b"ENCS");
 /// Version of this register map: major in bits 31:16, minor in 15:0. The major number
 /// changes when an offset or a field moves.
-pub const MAP_VERSION: u32 = 0x0001_0000;
+pub const MAP_VERSION: u32 = 0x0001_0001;
 /// Width of `wb_adr_i` (a byte address).
 pub const ADDR_BITS: usize = 8;
 /// Width of `wb_dat_i` and `wb_dat_o`.
@@ -70,6 +86,12 @@ pub const CTRL_MODE_LSB: usize = 0;
 pub const CTRL_Z_MODE_LSB: usize = 2;
 /// Width of `cfg_mode` and `cfg_z_mode`.
 pub const MODE_BITS: u32 = 2;
+/// The `CTRL.SAMPLED` bit: the value registers read the snapshot.
+pub const CTRL_SAMPLED_LSB: usize = 8;
+/// The `CTRL.HOLD` bit: the `sample` input is ignored.
+pub const CTRL_HOLD_LSB: usize = 9;
+/// The `CTRL.TRIGGER` bit (write 1 to pulse): take a snapshot.
+pub const CTRL_TRIGGER_LSB: usize = 10;
 
 /// The offsets, each a `pub const` of its register's name, and [`LAYOUT`] listing them in
 /// address order.
@@ -151,6 +173,8 @@ layout! {
     ILLEGAL_COUNT = 0x84;
     /// `rev_error_count`.
     REV_ERROR_COUNT = 0x88;
+    /// Snapshots taken since reset.
+    SNAP_COUNT = 0x8C;
 }
 
 /// The six speeds as (LO offset, HI offset, core port), in map order.
@@ -430,7 +454,7 @@ impl RegMap {
 
 /// The registers, in address order: the one description.
 fn build(mp: &MapParams) -> Vec<Register> {
-    use Access::{Ro, Rw, W1c};
+    use Access::{Ro, Rw, W1c, W1p};
     let n = mp.counter_bits;
     let s = mp.speed_bits();
     let c = mp.position_bits;
@@ -499,6 +523,13 @@ fn build(mp: &MapParams) -> Vec<Register> {
                 1,
                 Rw,
                 &format!("{what} a rising edge of stalled"),
+            ),
+            field(
+                "SAMPLE",
+                6,
+                1,
+                Rw,
+                &format!("{what} a snapshot was taken (sample or CTRL.TRIGGER)"),
             ),
         ]
     };
@@ -595,7 +626,7 @@ fn build(mp: &MapParams) -> Vec<Register> {
         reg(
             "CTRL",
             Some(0),
-            "Decoding modes (drive cfg_mode, cfg_z_mode)",
+            "Decoding modes (drive cfg_mode, cfg_z_mode) and the snapshot",
             None,
             vec![
                 field(
@@ -612,6 +643,28 @@ fn build(mp: &MapParams) -> Vec<Register> {
                     Rw,
                     "cfg_z_mode: 0 ignore Z, 1 Z resets position, 2 Z latches position, \
                      3 latch then reset",
+                ),
+                field(
+                    "SAMPLED",
+                    CTRL_SAMPLED_LSB as u32,
+                    1,
+                    Rw,
+                    "1: POSITION, NEP, NDT, SPEED_* and STATUS.VALID, STALLED, DIRECTION \
+                     read the snapshot; 0: live",
+                ),
+                field(
+                    "HOLD",
+                    CTRL_HOLD_LSB as u32,
+                    1,
+                    Rw,
+                    "1: the sample input is ignored (the snapshot stays until TRIGGER)",
+                ),
+                field(
+                    "TRIGGER",
+                    CTRL_TRIGGER_LSB as u32,
+                    1,
+                    W1p,
+                    "write 1: take a snapshot at the edge after the write edge",
                 ),
             ],
         ),
@@ -639,7 +692,8 @@ fn build(mp: &MapParams) -> Vec<Register> {
         reg(
             "STATUS",
             None,
-            "Core status levels (live) and sticky faults",
+            "Core status levels (live; VALID, STALLED, DIRECTION the snapshot's with \
+             CTRL.SAMPLED) and sticky faults",
             Some(
                 "a write with a 1 in any FAULT_* bit (byte lane 0) pulses clear_faults, \
                  which clears all three fault flags"
@@ -698,7 +752,7 @@ fn build(mp: &MapParams) -> Vec<Register> {
         live(
             "POSITION",
             c,
-            "position",
+            "position (the snapshot's with CTRL.SAMPLED)",
             "steps (modulo the steps per revolution)",
         ),
         live(
@@ -710,13 +764,13 @@ fn build(mp: &MapParams) -> Vec<Register> {
         live(
             "NEP",
             n,
-            "Nep1: encoder pulses of the last window",
+            "Nep1: encoder pulses of the last window (the snapshot's with CTRL.SAMPLED)",
             "pulses",
         ),
         live(
             "NDT",
             n,
-            "Ndt1: dt intervals between the last two pulses",
+            "Ndt1: dt intervals between the last two pulses (the snapshot's with CTRL.SAMPLED)",
             "dt intervals",
         ),
     ];
@@ -727,7 +781,8 @@ fn build(mp: &MapParams) -> Vec<Register> {
             lo_name,
             None,
             &format!(
-                "{port} (live), Q{n}.{} in units of w_lim, sign-extended to 64 bits: low word",
+                "{port} (live; the snapshot's with CTRL.SAMPLED), Q{n}.{} in units of w_lim, \
+                 sign-extended to 64 bits: low word",
                 mp.speed_frac_bits
             ),
             Some(format!("a read latches the high word into {hi_name}")),
@@ -762,6 +817,12 @@ fn build(mp: &MapParams) -> Vec<Register> {
         g,
         "revolutions with the wrong count (saturating)",
         "revolutions",
+    ));
+    regs.push(live(
+        "SNAP_COUNT",
+        32,
+        "snapshots taken since reset",
+        "snapshots, modulo 2^32",
     ));
     regs
 }
@@ -889,7 +950,9 @@ impl RegMap {
         }
         h += " * Offsets are in bytes from the base of the register window. Read a speed's\n";
         h += " * _LO register, then its _HI register: the LO read latches HI (coherent pair).\n";
-        h += " * Writing 1 to any STATUS FAULT_* bit clears all three fault flags.\n */\n";
+        h += " * Writing 1 to any STATUS FAULT_* bit clears all three fault flags.\n";
+        h += " * The sample input (or a write of 1 to CTRL.TRIGGER) takes a coherent snapshot;\n";
+        h += " * with CTRL.SAMPLED = 1 the value registers read it (CTRL.HOLD: sample ignored).\n */\n";
         h += "#ifndef ENCSPEED_REGS_H\n#define ENCSPEED_REGS_H\n\n";
         let params: [(&str, String, &str); 14] = [
             ("ID_MAGIC", format!("0x{ID_MAGIC:08X}u"), "ASCII \"ENCS\""),

@@ -18,10 +18,19 @@
 //! - `clear_faults` ← a write to `STATUS` with a 1 written to a fault bit;
 //! - `IRQ_STATUS` ← (`IRQ_STATUS` & !(bits written 1)) | events, the events being the
 //!   strobes `speed_strobe`, `baseline_strobe`, `index`, `update` and the rising edges of
-//!   (any) fault flag and of `stalled` (previous levels registered, 0 after reset).
+//!   (any) fault flag and of `stalled` (previous levels registered, 0 after reset), and
+//!   `SAMPLE` when a snapshot is taken;
+//! - a snapshot is taken when `sample & !CTRL.HOLD`, or `trigger` (the `CTRL.TRIGGER`
+//!   pulse, high in the cycle after a write of 1) is high: the snapshot ← `position`, `nep`,
+//!   `ndt`, the speeds, `valid`, `stalled`, `direction`; `SNAP_COUNT` ← `SNAP_COUNT` + 1
+//!   (modulo 2^32);
+//! - with `CTRL.SAMPLED`, the value registers (and the speeds' LO/HI) read the snapshot.
 
 use crate::bus::reg_file::{sign_extend, Cycle, RegFileModel, WbBus};
-use crate::bus::regmap::{self, Access, MapParams, RegMap, CTRL_MODE_LSB, CTRL_Z_MODE_LSB, SPEEDS};
+use crate::bus::regmap::{
+    self, Access, MapParams, RegMap, CTRL_HOLD_LSB, CTRL_MODE_LSB, CTRL_SAMPLED_LSB,
+    CTRL_TRIGGER_LSB, CTRL_Z_MODE_LSB, SPEEDS,
+};
 use crate::params::Params;
 
 /// The core's outputs that the register file reads, named as its ports. Values are the
@@ -75,6 +84,8 @@ impl CoreStatus {
 pub struct WbRegsInputs {
     /// Synchronous active-high reset.
     pub reset: bool,
+    /// Take a snapshot (unless `CTRL.HOLD`).
+    pub sample: bool,
     /// Wishbone inputs.
     pub bus: WbBus,
     /// The core's status outputs.
@@ -104,19 +115,75 @@ pub struct WbRegsOutputs {
     pub clear_faults: bool,
 }
 
+/// The values a snapshot holds (0 after reset), and how many were taken.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Snapshot {
+    /// `position`, `nep`, `ndt`, the six speeds and the levels `valid`, `stalled`,
+    /// `direction` (the other fields 0) as the core output them in the sampled cycle.
+    pub values: CoreStatus,
+    /// `SNAP_COUNT`: snapshots taken since reset, modulo 2^32.
+    pub count: u32,
+}
+
+impl Snapshot {
+    /// The snapshot of `st`.
+    fn of(st: &CoreStatus, count: u32) -> Snapshot {
+        Snapshot {
+            values: CoreStatus {
+                position: st.position,
+                nep: st.nep,
+                ndt: st.ndt,
+                speed_n1: st.speed_n1,
+                speed_n2: st.speed_n2,
+                speed_n3: st.speed_n3,
+                speed_pc: st.speed_pc,
+                speed_et: st.speed_et,
+                speed_mt: st.speed_mt,
+                valid: st.valid,
+                stalled: st.stalled,
+                direction: st.direction,
+                ..CoreStatus::default()
+            },
+            count,
+        }
+    }
+
+    /// `st` with the snapshot's values in place of the live ones.
+    fn view(&self, st: &CoreStatus) -> CoreStatus {
+        let v = &self.values;
+        CoreStatus {
+            position: v.position,
+            nep: v.nep,
+            ndt: v.ndt,
+            speed_n1: v.speed_n1,
+            speed_n2: v.speed_n2,
+            speed_n3: v.speed_n3,
+            speed_pc: v.speed_pc,
+            speed_et: v.speed_et,
+            speed_mt: v.speed_mt,
+            valid: v.valid,
+            stalled: v.stalled,
+            direction: v.direction,
+            ..*st
+        }
+    }
+}
+
 /// The register file, one step per clock edge: a [`RegFileModel`] with the core's live
 /// words, events and configuration outputs.
 #[derive(Clone, Debug)]
 pub struct WbRegsModel {
     map: RegMap,
     file: RegFileModel,
+    snapshot: Snapshot,
     /// fault_illegal, fault_overspeed, fault_revolution before the last edge.
     prev_faults: [bool; 3],
     prev_stalled: bool,
 }
 
-/// The file's one pulse: `clear_faults`.
+/// The file's pulses: `clear_faults`, and the snapshot trigger.
 const CLEAR_FAULTS: usize = 0;
+const TRIGGER: usize = 1;
 
 impl WbRegsModel {
     /// The register file of `p`, in its reset state.
@@ -128,16 +195,18 @@ impl WbRegsModel {
     pub fn from_map(map: RegMap) -> WbRegsModel {
         let shadows: Vec<(u32, u32)> = SPEEDS.iter().map(|&(lo, hi, _)| (lo, hi)).collect();
         let clear = (regmap::STATUS, map.reg("STATUS").mask_of(Access::W1c));
+        let trigger = (regmap::CTRL, 1 << CTRL_TRIGGER_LSB);
         let file = RegFileModel::new(
             map.registers().to_vec(),
             "IRQ_ENABLE",
             "IRQ_STATUS",
             &shadows,
-            &[clear],
+            &[clear, trigger],
         );
         WbRegsModel {
             map,
             file,
+            snapshot: Snapshot::default(),
             prev_faults: [false; 3],
             prev_stalled: false,
         }
@@ -150,6 +219,16 @@ impl WbRegsModel {
 
     fn mp(&self) -> &MapParams {
         self.map.params()
+    }
+
+    /// The snapshot as it stands.
+    pub fn snapshot(&self) -> Snapshot {
+        self.snapshot
+    }
+
+    /// `CTRL.SAMPLED` as it stands: the value registers read the snapshot.
+    pub fn sampled(&self) -> bool {
+        self.file.rw(regmap::CTRL) >> CTRL_SAMPLED_LSB & 1 != 0
     }
 
     /// The outputs as they stand.
@@ -191,7 +270,17 @@ impl WbRegsModel {
     pub fn step(&mut self, inp: &WbRegsInputs) -> WbRegsOutputs {
         let st = &inp.status;
         self.check(st);
-        let wide = st.speeds().map(|v| sign_extend(v, self.mp().speed_bits()));
+        let hold = self.file.rw(regmap::CTRL) >> CTRL_HOLD_LSB & 1 != 0;
+        let take = (inp.sample && !hold) || self.file.pulse(TRIGGER);
+        // What the value registers read: the snapshot before this edge, or the live values.
+        let seen = if self.sampled() {
+            self.snapshot.view(st)
+        } else {
+            *st
+        };
+        let wide = seen
+            .speeds()
+            .map(|v| sign_extend(v, self.mp().speed_bits()));
         let faults = [st.fault_illegal, st.fault_overspeed, st.fault_revolution];
         let fault_rose = faults.iter().zip(self.prev_faults).any(|(&f, p)| f && !p);
         let ev = |b: bool, field: &str| {
@@ -206,7 +295,8 @@ impl WbRegsModel {
             | ev(st.index, "INDEX")
             | ev(fault_rose, "FAULT")
             | ev(st.update, "UPDATE")
-            | ev(st.stalled && !self.prev_stalled, "STALL");
+            | ev(st.stalled && !self.prev_stalled, "STALL")
+            | ev(take, "SAMPLE");
         let cycle = Cycle {
             reset: inp.reset,
             bus: &inp.bus,
@@ -214,7 +304,14 @@ impl WbRegsModel {
             events,
         };
         let map = &self.map;
-        self.file.step(&cycle, &|off| live(map, off, st));
+        let count = self.snapshot.count;
+        self.file
+            .step(&cycle, &|off| live(map, off, &seen, st, count));
+        if inp.reset {
+            self.snapshot = Snapshot::default();
+        } else if take {
+            self.snapshot = Snapshot::of(st, count.wrapping_add(1));
+        }
         (self.prev_faults, self.prev_stalled) = if inp.reset {
             ([false; 3], false)
         } else {
@@ -224,23 +321,26 @@ impl WbRegsModel {
     }
 }
 
-/// The live word at byte offset `off` (word aligned) of `m` with status `st`.
-fn live(m: &RegMap, off: u32, st: &CoreStatus) -> u32 {
+/// The live word at byte offset `off` (word aligned) of `m`: `seen` the status as the
+/// value registers read it (live or the snapshot), `st` the live status, `count` the
+/// snapshots taken.
+fn live(m: &RegMap, off: u32, seen: &CoreStatus, st: &CoreStatus, count: u32) -> u32 {
     let bit = |b: bool, field: &str| if b { m.mask("STATUS", field) } else { 0 };
     match off {
         regmap::STATUS => {
-            bit(st.valid, "VALID")
-                | bit(st.stalled, "STALLED")
-                | bit(st.direction, "DIRECTION")
+            bit(seen.valid, "VALID")
+                | bit(seen.stalled, "STALLED")
+                | bit(seen.direction, "DIRECTION")
                 | bit(st.cfg_error, "CFG_ERROR")
                 | bit(st.fault_illegal, "FAULT_ILLEGAL")
                 | bit(st.fault_overspeed, "FAULT_OVERSPEED")
                 | bit(st.fault_revolution, "FAULT_REVOLUTION")
         }
-        regmap::POSITION => st.position as u32,
+        regmap::POSITION => seen.position as u32,
         regmap::Z_LATCH => st.z_latch as u32,
-        regmap::NEP => st.nep as u32,
-        regmap::NDT => st.ndt as u32,
+        regmap::NEP => seen.nep as u32,
+        regmap::NDT => seen.ndt as u32,
+        regmap::SNAP_COUNT => count,
         regmap::GLITCH_COUNT => st.glitch_count as u32,
         regmap::ILLEGAL_COUNT => st.illegal_count as u32,
         regmap::REV_ERROR_COUNT => st.rev_error_count as u32,
@@ -279,6 +379,7 @@ mod tests {
         };
         let o = m.step(&WbRegsInputs {
             reset: false,
+            sample: false,
             bus,
             status: *st,
         });
@@ -391,6 +492,86 @@ mod tests {
         assert_eq!(read(&mut m, &st, SPEED_N3_LO), 7);
         assert_eq!(read(&mut m, &st, SPEED_N3_HI), 0);
         assert_eq!(read(&mut m, &st, SPEED_N1_HI), 0, "own shadow per speed");
+    }
+
+    /// The snapshot by hand: a `sample` strobe stores one cycle's values, `CTRL.SAMPLED`
+    /// reads them in place of the live ones (the fault and cfg_error bits stay live),
+    /// `CTRL.HOLD` ignores `sample`, `CTRL.TRIGGER` takes one at the edge after the write
+    /// edge; `SNAP_COUNT` counts them and `IRQ_STATUS.SAMPLE` latches each.
+    #[test]
+    fn a_sample_strobe_takes_a_coherent_snapshot_that_ctrl_sampled_reads() {
+        let mut m = model();
+        let s_bits = m.map().params().speed_bits();
+        let raw = |v: i64| (v as u64) & ((1u64 << s_bits) - 1);
+        let then = CoreStatus {
+            position: 5,
+            nep: 7,
+            ndt: 3,
+            speed_n3: raw(-5_000_000_000),
+            speed_mt: raw(1234),
+            valid: true,
+            direction: true,
+            ..Default::default()
+        };
+        let now = CoreStatus {
+            position: 9,
+            nep: 2,
+            ndt: 1,
+            speed_n3: raw(77),
+            stalled: true,
+            cfg_error: true,
+            fault_illegal: true,
+            ..Default::default()
+        };
+        m.step(&WbRegsInputs {
+            sample: true,
+            status: then,
+            ..Default::default()
+        });
+        assert_eq!(read(&mut m, &now, SNAP_COUNT), 1);
+        // SAMPLE, and FAULT and STALL from `now`'s rising fault_illegal and stalled.
+        assert_eq!(read(&mut m, &now, IRQ_STATUS), 0x40 | 0x8 | 0x20);
+        assert_eq!(read(&mut m, &now, POSITION), 9, "live while SAMPLED = 0");
+        assert_eq!(read(&mut m, &now, STATUS), 0x2 | 0x8 | 0x10);
+        // SAMPLED (bit 8, byte lane 1 alone: MODE and Z_MODE stay as written).
+        write(&mut m, &now, CTRL, 0x6, 0x1);
+        write(&mut m, &now, CTRL, 0x100, 0x2);
+        assert_eq!(read(&mut m, &now, CTRL), 0x106);
+        assert_eq!((m.outputs().cfg_mode, m.outputs().cfg_z_mode), (2, 1));
+        assert_eq!(read(&mut m, &now, POSITION), 5);
+        assert_eq!(read(&mut m, &now, NEP), 7);
+        assert_eq!(read(&mut m, &now, NDT), 3);
+        let lo = read(&mut m, &now, SPEED_N3_LO);
+        let hi = read(&mut m, &now, SPEED_N3_HI);
+        assert_eq!(
+            ((u64::from(hi) << 32) | u64::from(lo)) as i64,
+            -5_000_000_000
+        );
+        assert_eq!(read(&mut m, &now, SPEED_MT_LO), 1234);
+        // VALID, DIRECTION from the snapshot; CFG_ERROR, FAULT_ILLEGAL live.
+        assert_eq!(read(&mut m, &now, STATUS), 0x1 | 0x4 | 0x8 | 0x10);
+        // HOLD: a strobe is ignored.
+        write(&mut m, &now, CTRL, 0x300, 0x2);
+        m.step(&WbRegsInputs {
+            sample: true,
+            status: now,
+            ..Default::default()
+        });
+        assert_eq!(read(&mut m, &now, SNAP_COUNT), 1);
+        assert_eq!(read(&mut m, &now, POSITION), 5);
+        // TRIGGER (bit 10, reads 0): a snapshot at the edge after the write edge, HOLD or not.
+        write(&mut m, &now, CTRL, 0x700, 0x2);
+        assert_eq!(read(&mut m, &now, CTRL), 0x306);
+        assert_eq!(read(&mut m, &now, SNAP_COUNT), 2);
+        assert_eq!(read(&mut m, &now, POSITION), 9);
+        assert_eq!(read(&mut m, &now, SPEED_N3_LO), 77);
+        assert_eq!(read(&mut m, &now, SPEED_N3_HI), 0);
+        // Reset: the snapshot and its count are 0.
+        m.step(&WbRegsInputs {
+            reset: true,
+            ..Default::default()
+        });
+        assert_eq!(m.snapshot(), Snapshot::default());
     }
 
     #[test]

@@ -91,6 +91,7 @@ impl EccWbTopModel {
         });
         self.regs.step(&WbRegsInputs {
             reset: inp.reset,
+            sample: inp.sample,
             bus: routed(&inp.bus, false),
             status,
         });

@@ -49,13 +49,15 @@ pub struct WbTopInputs {
     pub enc_b: bool,
     /// Encoder index Z (asynchronous).
     pub enc_z: bool,
+    /// Take a snapshot (synchronous; ignored while `CTRL.HOLD`).
+    pub sample: bool,
     /// Wishbone inputs.
     pub bus: WbBus,
 }
 
 impl PortFields for WbTopInputs {
     fn visit_ports(&mut self, visit: &mut dyn FnMut(&'static str, &mut dyn PortValue)) {
-        visit_fields!(visit, self, "": reset, enc_a, enc_b, enc_z);
+        visit_fields!(visit, self, "": reset, enc_a, enc_b, enc_z, sample);
         visit_fields!(visit, self.bus, "":
             wb_cyc_i, wb_stb_i, wb_we_i, wb_adr_i, wb_dat_i, wb_sel_i);
     }
@@ -149,6 +151,7 @@ impl WbTopModel {
         self.core.step(core_inputs(inp, &cfg));
         self.regs.step(&WbRegsInputs {
             reset: inp.reset,
+            sample: inp.sample,
             bus: inp.bus,
             status,
         });
@@ -198,6 +201,7 @@ pub fn wb_top_ports() -> Vec<Port> {
     ];
     v.extend(encoder_inputs());
     v.extend([
+        i("sample", 1, "synchronous strobe: at the edge that samples it high (unless CTRL.HOLD) the register file takes a coherent snapshot of position, nep, ndt, the speeds and valid/stalled/direction as the core outputs them in that cycle (CTRL.SAMPLED reads it); tie to 0 if unused"),
         i("wb_cyc_i", 1, "Wishbone B4 classic: bus cycle"),
         i("wb_stb_i", 1, "Wishbone: strobe (this slave is addressed)"),
         i("wb_we_i", 1, "Wishbone: 1 = write, 0 = read"),

@@ -132,6 +132,8 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedBoard<N, 
         self.ip.enc_a.next = self.enc_a.val();
         self.ip.enc_b.next = self.enc_b.val();
         self.ip.enc_z.next = self.enc_z.val();
+        // No PWM carrier on the board: snapshots by CTRL.TRIGGER only.
+        self.ip.sample.next = false;
 
         // Bridge (master) ↔ encspeed_wb (slave).
         self.ip.wb_cyc_i.next = self.bridge.wb_cyc_o.val();

@@ -16,5 +16,6 @@ pub mod read_data;
 pub mod reg_file;
 pub mod rw_cell;
 pub mod shadow_cell;
+pub mod snapshot;
 pub mod wb_front;
 pub mod wb_regs;

@@ -34,6 +34,7 @@
 //! | `cfg_filter` | out | FB | `CFG_FILTER` |
 //! | `cfg_mode`, `cfg_z_mode` | out | 2 | `CTRL.MODE`, `CTRL.Z_MODE` |
 //! | `clear_faults` | out | 1 | one cycle after a write of 1 to a `STATUS` fault bit |
+//! | `sample` | in | 1 | take a snapshot at this edge (ignored while `CTRL.HOLD`) |
 //! | `position`, `z_latch` | in | C | core outputs |
 //! | `nep`, `ndt` | in | N | core outputs |
 //! | `speed_n1..n3`, `speed_pc`, `speed_et`, `speed_mt` | in | S | core outputs (two's complement) |
@@ -57,11 +58,13 @@
 //! map's entry: [`ConstCell`] for the constants,
 //! [`RwCell`] for `CTRL` and the `CFG_*` words, [`ReadCell`] for the live words (the
 //! `STATUS` word is assembled here from the flags at the map's bit positions),
-//! [`ShadowCell`] for the six LO/HI speed pairs and [`PulseCell`] for `clear_faults`. What
-//! is this file's own: the interrupt events (strobes and rising edges of the fault flags
-//! and of `stalled`) and the slicing of `CTRL` into `cfg_mode`, `cfg_z_mode` at the map's
-//! [`CTRL_MODE_LSB`], [`CTRL_Z_MODE_LSB`] through a one-pass loop variable (a const in a
-//! slice would be emitted as an undeclared identifier).
+//! [`ShadowCell`] for the six LO/HI speed pairs and [`PulseCell`] for `clear_faults` and
+//! `CTRL.TRIGGER`; the [`Snapshot`] between the core's values and the cells that read them.
+//! What is this file's own: the interrupt events (strobes, rising edges of the fault flags
+//! and of `stalled`, snapshots taken), the snapshot's `take`, and the slicing of `CTRL` into
+//! `cfg_mode`, `cfg_z_mode`, `SAMPLED`, `HOLD` at the map's [`CTRL_MODE_LSB`],
+//! [`CTRL_Z_MODE_LSB`], [`CTRL_SAMPLED_LSB`], [`CTRL_HOLD_LSB`] through a one-pass loop
+//! variable (a const in a slice would be emitted as an undeclared identifier).
 
 use crate::bus::const_cell::ConstCell;
 use crate::bus::pulse_cell::PulseCell;
@@ -69,8 +72,10 @@ use crate::bus::read_cell::ReadCell;
 use crate::bus::reg_file::RegFile;
 use crate::bus::rw_cell::RwCell;
 use crate::bus::shadow_cell::ShadowCell;
+use crate::bus::snapshot::Snapshot;
 use golden::bus::regmap::{
-    Access, RegMap, ADDR_BITS, CTRL_MODE_LSB, CTRL_Z_MODE_LSB, MODE_BITS, SPEEDS,
+    Access, RegMap, ADDR_BITS, CTRL_HOLD_LSB, CTRL_MODE_LSB, CTRL_SAMPLED_LSB, CTRL_TRIGGER_LSB,
+    CTRL_Z_MODE_LSB, MODE_BITS, SPEEDS,
 };
 use golden::params::Params;
 use rust_hdl::prelude::*;
@@ -85,8 +90,8 @@ macro_rules! wb_regs_type {
     };
 }
 
-/// Width of `CTRL`'s RW fields (`MODE`, `Z_MODE`).
-const CTRL_BITS: usize = 4;
+/// Width of `CTRL`'s RW fields (`MODE`, `Z_MODE`, `SAMPLED`, `HOLD`).
+const CTRL_BITS: usize = 10;
 
 /// Wishbone register file of `encspeed_core`.
 #[derive(LogicBlock)]
@@ -125,6 +130,8 @@ pub struct WbRegs<const N: usize, const S: usize, const C: usize, const FB: usiz
     pub cfg_z_mode: Signal<Out, Bits<2>>,
     /// One cycle: clear the sticky faults.
     pub clear_faults: Signal<Out, Bit>,
+    /// Take a snapshot (unless `CTRL.HOLD`).
+    pub sample: Signal<In, Bit>,
     /// Position, steps.
     pub position: Signal<In, Bits<C>>,
     /// Position latched at the last index edge.
@@ -189,6 +196,12 @@ pub struct WbRegs<const N: usize, const S: usize, const C: usize, const FB: usiz
     r_cfg_filter: RwCell<FB>,
     status: ReadCell<32>,
     fault_clear: PulseCell,
+    trigger: PulseCell,
+    snapshot: Snapshot<N, S, C>,
+    snap_count: ReadCell<32>,
+    sampled: Signal<Local, Bit>,
+    hold: Signal<Local, Bit>,
+    take: Signal<Local, Bit>,
     r_position: ReadCell<C>,
     r_z_latch: ReadCell<C>,
     r_nep: ReadCell<N>,
@@ -224,6 +237,7 @@ pub struct WbRegs<const N: usize, const S: usize, const C: usize, const FB: usiz
     e_fault: Constant<Bits<32>>,
     e_update: Constant<Bits<32>>,
     e_stall: Constant<Bits<32>>,
+    e_sample: Constant<Bits<32>>,
     z32: Constant<Bits<32>>,
 }
 
@@ -258,6 +272,9 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         assert_eq!(ctrl.field("Z_MODE").lsb as usize, CTRL_Z_MODE_LSB);
         assert_eq!(ctrl.field("MODE").width, MODE_BITS);
         assert_eq!(ctrl.field("Z_MODE").width, MODE_BITS);
+        assert_eq!(ctrl.field("SAMPLED").lsb as usize, CTRL_SAMPLED_LSB);
+        assert_eq!(ctrl.field("HOLD").lsb as usize, CTRL_HOLD_LSB);
+        assert_eq!(ctrl.field("TRIGGER").lsb as usize, CTRL_TRIGGER_LSB);
         let r = |name: &str| map.reg(name);
         let k = |v: u32| -> Constant<Bits<32>> { Constant::new(u64::from(v).into()) };
         let status = |field: &str| k(map.mask("STATUS", field));
@@ -284,6 +301,7 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             cfg_mode: Default::default(),
             cfg_z_mode: Default::default(),
             clear_faults: Default::default(),
+            sample: Default::default(),
             position: Default::default(),
             z_latch: Default::default(),
             index: Default::default(),
@@ -323,6 +341,12 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             r_cfg_filter: RwCell::new(r("CFG_FILTER")),
             status: ReadCell::new(r("STATUS")),
             fault_clear: PulseCell::new(r("STATUS"), r("STATUS").mask_of(Access::W1c)),
+            trigger: PulseCell::new(ctrl, ctrl.field("TRIGGER").mask()),
+            snapshot: Default::default(),
+            snap_count: ReadCell::new(r("SNAP_COUNT")),
+            sampled: Default::default(),
+            hold: Default::default(),
+            take: Default::default(),
             r_position: ReadCell::new(r("POSITION")),
             r_z_latch: ReadCell::new(r("Z_LATCH")),
             r_nep: ReadCell::new(r("NEP")),
@@ -356,6 +380,7 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             e_fault: event("FAULT"),
             e_update: event("UPDATE"),
             e_stall: event("STALL"),
+            e_sample: event("SAMPLE"),
             z32: k(0),
         }
     }
@@ -383,6 +408,8 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             r_cfg_timeout,
             r_cfg_filter,
             fault_clear,
+            trigger,
+            snapshot,
             n1,
             n2,
             n3,
@@ -443,16 +470,46 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         for lsb in CTRL_Z_MODE_LSB..(CTRL_Z_MODE_LSB + 1) {
             self.cfg_z_mode.next = self.ctrl.q.val().get_bits::<2>(lsb);
         }
+        for lsb in CTRL_SAMPLED_LSB..(CTRL_SAMPLED_LSB + 1) {
+            self.sampled.next = self.ctrl.q.val().get_bit(lsb);
+        }
+        for lsb in CTRL_HOLD_LSB..(CTRL_HOLD_LSB + 1) {
+            self.hold.next = self.ctrl.q.val().get_bit(lsb);
+        }
+
+        // The snapshot: by `sample` unless HOLD, or by a write of 1 to CTRL.TRIGGER.
+        self.trigger.reset.next = self.reset.val();
+        self.trigger.adr.next = self.file.adr.val();
+        self.trigger.wr.next = self.file.wr.val();
+        self.trigger.ones.next = self.file.ones.val();
+        self.snapshot.reset.next = self.reset.val();
+        self.take.next = (self.sample.val() & (!self.hold.val())) | self.trigger.pulse.val();
+        self.snapshot.take.next = self.take.val();
+        self.snapshot.sampled.next = self.sampled.val();
+        self.snapshot.position.next = self.position.val();
+        self.snapshot.nep.next = self.nep.val();
+        self.snapshot.ndt.next = self.ndt.val();
+        self.snapshot.speed_n1.next = self.speed_n1.val();
+        self.snapshot.speed_n2.next = self.speed_n2.val();
+        self.snapshot.speed_n3.next = self.speed_n3.val();
+        self.snapshot.speed_pc.next = self.speed_pc.val();
+        self.snapshot.speed_et.next = self.speed_et.val();
+        self.snapshot.speed_mt.next = self.speed_mt.val();
+        self.snapshot.valid.next = self.valid.val();
+        self.snapshot.stalled.next = self.stalled.val();
+        self.snapshot.direction.next = self.direction.val();
+        self.snap_count.adr.next = self.file.adr.val();
+        self.snap_count.value.next = self.snapshot.count.val();
 
         // STATUS: the flags, live; a 1 written to a fault bit clears the core's faults.
         self.status_word.next = self.z32.val();
-        if self.valid.val() {
+        if self.snapshot.seen_valid.val() {
             self.status_word.next = self.status_word.val() | self.s_valid.val();
         }
-        if self.stalled.val() {
+        if self.snapshot.seen_stalled.val() {
             self.status_word.next = self.status_word.val() | self.s_stalled.val();
         }
-        if self.direction.val() {
+        if self.snapshot.seen_direction.val() {
             self.status_word.next = self.status_word.val() | self.s_direction.val();
         }
         if self.cfg_error.val() {
@@ -477,13 +534,13 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
 
         // Live words.
         self.r_position.adr.next = self.file.adr.val();
-        self.r_position.value.next = self.position.val();
+        self.r_position.value.next = self.snapshot.seen_position.val();
         self.r_z_latch.adr.next = self.file.adr.val();
         self.r_z_latch.value.next = self.z_latch.val();
         self.r_nep.adr.next = self.file.adr.val();
-        self.r_nep.value.next = self.nep.val();
+        self.r_nep.value.next = self.snapshot.seen_nep.val();
         self.r_ndt.adr.next = self.file.adr.val();
-        self.r_ndt.value.next = self.ndt.val();
+        self.r_ndt.value.next = self.snapshot.seen_ndt.val();
         self.glitch.adr.next = self.file.adr.val();
         self.glitch.value.next = self.glitch_count.val();
         self.illegal.adr.next = self.file.adr.val();
@@ -495,27 +552,27 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         self.n1.reset.next = self.reset.val();
         self.n1.adr.next = self.file.adr.val();
         self.n1.rd.next = self.file.rd.val();
-        self.n1.value.next = self.speed_n1.val();
+        self.n1.value.next = self.snapshot.seen_n1.val();
         self.n2.reset.next = self.reset.val();
         self.n2.adr.next = self.file.adr.val();
         self.n2.rd.next = self.file.rd.val();
-        self.n2.value.next = self.speed_n2.val();
+        self.n2.value.next = self.snapshot.seen_n2.val();
         self.n3.reset.next = self.reset.val();
         self.n3.adr.next = self.file.adr.val();
         self.n3.rd.next = self.file.rd.val();
-        self.n3.value.next = self.speed_n3.val();
+        self.n3.value.next = self.snapshot.seen_n3.val();
         self.pc.reset.next = self.reset.val();
         self.pc.adr.next = self.file.adr.val();
         self.pc.rd.next = self.file.rd.val();
-        self.pc.value.next = self.speed_pc.val();
+        self.pc.value.next = self.snapshot.seen_pc.val();
         self.et.reset.next = self.reset.val();
         self.et.adr.next = self.file.adr.val();
         self.et.rd.next = self.file.rd.val();
-        self.et.value.next = self.speed_et.val();
+        self.et.value.next = self.snapshot.seen_et.val();
         self.mt.reset.next = self.reset.val();
         self.mt.adr.next = self.file.adr.val();
         self.mt.rd.next = self.file.rd.val();
-        self.mt.value.next = self.speed_mt.val();
+        self.mt.value.next = self.snapshot.seen_mt.val();
 
         // Read data: the cells' words (each 0 away from its offset).
         self.file.cells.next = self.id.rdata.val()
@@ -543,7 +600,8 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             | self.mt.rdata.val()
             | self.glitch.rdata.val()
             | self.illegal.rdata.val()
-            | self.rev.rdata.val();
+            | self.rev.rdata.val()
+            | self.snap_count.rdata.val();
 
         // Interrupt events: the strobes and the rising edges of the faults and of stalled.
         self.fault_rose.next = (self.fault_illegal.val() & (!self.prev_illegal.q.val()))
@@ -567,6 +625,9 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         }
         if self.stalled.val() & (!self.prev_stalled.q.val()) {
             self.events.next = self.events.val() | self.e_stall.val();
+        }
+        if self.take.val() {
+            self.events.next = self.events.val() | self.e_sample.val();
         }
         self.file.events.next = self.events.val();
         self.prev_illegal.d.next = self.fault_illegal.val();

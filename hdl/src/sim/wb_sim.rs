@@ -51,6 +51,7 @@ impl<const N: usize, const P: usize, const S: usize> WbSim for Driven<N, P, S> {
         u.enc_a.next = inp.enc_a;
         u.enc_b.next = inp.enc_b;
         u.enc_z.next = inp.enc_z;
+        u.sample.next = inp.sample;
         u.wb_cyc_i.next = b.wb_cyc_i;
         u.wb_stb_i.next = b.wb_stb_i;
         u.wb_we_i.next = b.wb_we_i;

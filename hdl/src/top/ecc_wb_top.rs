@@ -15,7 +15,7 @@
 //!
 //! # Ports
 //! Those of `encspeed_wb` (`golden::top::wb_top::wb_top_ports`): `clock`, `reset`, `enc_a`,
-//! `enc_b`, `enc_z`, `wb_cyc_i`, `wb_stb_i`, `wb_we_i`, `wb_adr_i[7:0]`, `wb_dat_i[31:0]`,
+//! `enc_b`, `enc_z`, `sample`, `wb_cyc_i`, `wb_stb_i`, `wb_we_i`, `wb_adr_i[7:0]`, `wb_dat_i[31:0]`,
 //! `wb_sel_i[3:0]`, `wb_dat_o[31:0]`, `wb_ack_o`, `irq`.
 //!
 //! # Timing
@@ -50,6 +50,8 @@ pub struct EncspeedEccWb<const N: usize, const P: usize, const S: usize, const C
     pub enc_b: Signal<In, Bit>,
     /// Encoder index Z (asynchronous).
     pub enc_z: Signal<In, Bit>,
+    /// Take a snapshot (synchronous; ignored while `CTRL.HOLD`).
+    pub sample: Signal<In, Bit>,
     /// Wishbone: bus cycle.
     pub wb_cyc_i: Signal<In, Bit>,
     /// Wishbone: strobe.
@@ -90,6 +92,7 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EncspeedEc
             enc_a: Default::default(),
             enc_b: Default::default(),
             enc_z: Default::default(),
+            sample: Default::default(),
             wb_cyc_i: Default::default(),
             wb_stb_i: Default::default(),
             wb_we_i: Default::default(),
@@ -116,6 +119,7 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         clock!(self, clock, ecc, regs, window);
         self.ecc.reset.next = self.reset.val();
         self.regs.reset.next = self.reset.val();
+        self.regs.sample.next = self.sample.val();
         self.window.reset.next = self.reset.val();
 
         // Encoder in.

@@ -18,7 +18,7 @@
 //!
 //! # Ports
 //! `clock`, `reset` (synchronous, active high, both halves), `enc_a`, `enc_b`, `enc_z`
-//! (asynchronous), `wb_cyc_i`, `wb_stb_i`, `wb_we_i`, `wb_adr_i[7:0]`, `wb_dat_i[31:0]`,
+//! (asynchronous), `sample` (synchronous snapshot strobe), `wb_cyc_i`, `wb_stb_i`, `wb_we_i`, `wb_adr_i[7:0]`, `wb_dat_i[31:0]`,
 //! `wb_sel_i[3:0]`, `wb_dat_o[31:0]`, `wb_ack_o`, `irq`
 //! ([`golden::top::wb_top::wb_top_ports`] describes each).
 //!
@@ -53,6 +53,8 @@ pub struct EncspeedWb<const N: usize, const P: usize, const S: usize> {
     pub enc_b: Signal<In, Bit>,
     /// Encoder index Z (asynchronous).
     pub enc_z: Signal<In, Bit>,
+    /// Take a snapshot (synchronous; ignored while `CTRL.HOLD`).
+    pub sample: Signal<In, Bit>,
     /// Wishbone: bus cycle.
     pub wb_cyc_i: Signal<In, Bit>,
     /// Wishbone: strobe.
@@ -87,6 +89,7 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedWb<N, P, S> {
             enc_a: Default::default(),
             enc_b: Default::default(),
             enc_z: Default::default(),
+            sample: Default::default(),
             wb_cyc_i: Default::default(),
             wb_stb_i: Default::default(),
             wb_we_i: Default::default(),
@@ -108,6 +111,7 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedWb<N, P, 
         clock!(self, clock, core, regs);
         self.core.reset.next = self.reset.val();
         self.regs.reset.next = self.reset.val();
+        self.regs.sample.next = self.sample.val();
 
         // Encoder and bus in.
         self.core.enc_a.next = self.enc_a.val();

@@ -128,14 +128,12 @@ fn golden(p: &Params, d: u32, inputs: &[BoardInputs]) -> GoldenRun {
             enc_a: i.enc_a,
             enc_b: i.enc_b,
             enc_z: i.enc_z,
+            sample: false,
             bus,
         });
         irq = o.irq;
         active = match active {
-            Some((cmd, true)) => {
-                let _ = cmd;
-                None
-            }
+            Some((_, true)) => None,
             Some((cmd, false)) if o.wb_ack_o => {
                 let bytes = match cmd {
                     Command::Read { .. } => Response::Data(o.wb_dat_o).encode(),
@@ -262,6 +260,14 @@ fn rust_hdl_board_equals_golden_with_known_answers() {
     );
 }
 
+/// The contents of `generated/<name>`.
+fn shipped_file(name: &str) -> String {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../generated")
+        .join(name);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
 /// The emitted board top in Verilator on the rust-hdl run's inputs: the same outputs on
 /// every cycle; the shipped file is that Verilog; and it lints with the IP's waivers.
 #[test]
@@ -270,12 +276,7 @@ fn verilator_equals_rust_hdl_and_the_shipped_file_is_current() {
         let p = board_params(board);
         let d = board.uart().divisor();
         let verilog = hdl::build_board(board, &p).verilog(&board.module());
-        let shipped = std::fs::read_to_string(
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-                .join("../generated")
-                .join(format!("{}.v", board.module())),
-        )
-        .unwrap();
+        let shipped = shipped_file(&format!("{}.v", board.module()));
         assert!(
             shipped.ends_with(&verilog),
             "generated/{}.v is not the board top's Verilog: run `encspeed generate`",
@@ -322,12 +323,7 @@ fn verilator_equals_rust_hdl_and_the_shipped_file_is_current() {
         assert_eq!(lines, &1024u32.to_le_bytes(), "LINES");
         // The shipped waivers make `verilator --lint-only -Wall` clean.
         let module = board.module();
-        let vlt = std::fs::read_to_string(
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-                .join("../generated")
-                .join(format!("{module}.vlt")),
-        )
-        .unwrap();
+        let vlt = shipped_file(&format!("{module}.vlt"));
         let dir = tools::work_dir("board_lint", &module).unwrap();
         let file = format!("{module}.v");
         let vlt_file = format!("{module}.vlt");

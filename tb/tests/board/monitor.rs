@@ -155,13 +155,15 @@ fn host_identifies_the_board_and_reads_speeds_within_their_budget() {
         s.status
     );
     assert_eq!(s.status >> 3, 0, "no fault, no cfg_error: {:#x}", s.status);
-    // The position counts lines (x1) modulo 1024. It is read by the first command of the
-    // sample, whose request reaches the bus within two frames and a half (2 600 cycles)
-    // of the sample's start: at most 2 600 / 92 = 28 lines after the lines made by then
-    // (the input pipeline's few cycles behind the stimulus are under one step).
+    assert_eq!(s.snapshot, 1, "the first snapshot since reset");
+    // The position counts lines (x1) modulo 1024. The snapshot is taken at the edge after
+    // the trigger write's edge, whose request reaches the bus once its seven frames are in
+    // (7 × 10 × 104 = 7 280 cycles) plus the bridge's few cycles: at most 7 400 / 92 = 80.4
+    // lines after the lines made by the sample's start (the input pipeline's few cycles
+    // behind the stimulus are under one step).
     let ahead = (s.position + 1024 - (before / PERIOD / 4) as u32 % 1024) % 1024;
     assert!(
-        ahead <= 29,
+        ahead <= 81,
         "position {} is {ahead} lines past the sample's start",
         s.position
     );
@@ -184,4 +186,12 @@ fn host_identifies_the_board_and_reads_speeds_within_their_budget() {
     }
     let line = s.line(&info);
     assert!(line.contains("valid forward"), "{line}");
+    // HOLD keeps the snapshot while the disc turns on (the sample's 16 reads of six frames
+    // took 16 × 6 × 1 040 ≈ 100 000 cycles, some 1 080 lines): POSITION still reads the
+    // snapshot's.
+    assert_eq!(bridge.read(regmap::POSITION).unwrap(), s.position);
+    // The next sample is the next snapshot, of a later position.
+    let again = sample(&mut bridge, &info).unwrap();
+    assert_eq!(again.snapshot, 2);
+    assert_ne!(again.position, s.position);
 }

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! `WbRegs` against its cycle model `golden::bus::wb_regs::WbRegsModel`, every cycle, on random
 //! Wishbone transactions (reads and writes of mapped and unmapped offsets with random byte
-//! lanes, W1C writes to `STATUS` and `IRQ_STATUS`, LO-then-HI speed reads, idle cycles,
-//! resets, and cycles of arbitrary bus signals) and random status inputs (strobes, levels
-//! that rise and fall, values with corner cases):
+//! lanes, W1C writes to `STATUS` and `IRQ_STATUS`, writes to `CTRL` that set and clear
+//! `SAMPLED` and `HOLD` and pulse `TRIGGER`, LO-then-HI speed reads, idle cycles, resets,
+//! and cycles of arbitrary bus signals), random `sample` strobes and random status inputs
+//! (strobes, levels that rise and fall, values with corner cases):
 //! - rust-hdl simulation (direct drive) = model: property tests at the widths of the
 //!   default `Params`, at small widths (N = 8, F = 2, C = 4, FB = 1, G = 1) and at the widest
 //!   (N = 32, F = 24, C = FB = G = 32);
@@ -84,6 +85,7 @@ fn address(rng: &mut SplitMix) -> u32 {
         0 => (rng.next() % u64::from(SPAN_BYTES)) as u32,
         1 => regmap::STATUS | low,
         2 => regmap::IRQ_STATUS | low,
+        3 => regmap::CTRL | low,
         _ => LAYOUT[(rng.next() % LAYOUT.len() as u64) as usize].1 | low,
     }
 }
@@ -200,6 +202,10 @@ struct Coverage {
     clears: usize,
     irqs: usize,
     back_to_back: usize,
+    /// Snapshots taken (by `sample` or `CTRL.TRIGGER`).
+    snapshots: usize,
+    /// Reads executed while `CTRL.SAMPLED`.
+    sampled_reads: usize,
 }
 
 type Trace = Vec<(WbRegsInputs, WbRegsOutputs)>;
@@ -210,6 +216,8 @@ struct Tracer {
     rng: SplitMix,
     status: CoreStatus,
     out: Trace,
+    snapshots: usize,
+    sampled_reads: usize,
 }
 
 impl Tracer {
@@ -218,10 +226,14 @@ impl Tracer {
         self.status = next_status(&mut self.rng, &mp, &self.status);
         let inp = WbRegsInputs {
             reset,
+            sample: self.rng.next().is_multiple_of(6),
             bus,
             status: self.status,
         };
+        let (count, sampled) = (self.model.snapshot().count, self.model.sampled());
         let o = self.model.step(&inp);
+        self.snapshots += usize::from(self.model.snapshot().count != count && !reset);
+        self.sampled_reads += usize::from(sampled && o.wb_ack_o && !inp.bus.wb_we_i);
         self.out.push((inp, o));
     }
 
@@ -257,6 +269,8 @@ fn trace(map: &RegMap, seed: u64, ops: &[Op]) -> (Trace, Coverage) {
         rng: SplitMix(seed),
         status: CoreStatus::default(),
         out: Vec::new(),
+        snapshots: 0,
+        sampled_reads: 0,
     };
     let mut cov = Coverage::default();
     t.cycle(true, WbBus::default());
@@ -277,6 +291,7 @@ fn trace(map: &RegMap, seed: u64, ops: &[Op]) -> (Trace, Coverage) {
             Op::Chaos(bus) => t.cycle(false, bus),
         }
     }
+    (cov.snapshots, cov.sampled_reads) = (t.snapshots, t.sampled_reads);
     let out = t.out;
     for (k, (i, o)) in out.iter().enumerate() {
         cov.acks += usize::from(o.wb_ack_o);
@@ -306,6 +321,7 @@ fn step<const N: usize, const S: usize, const C: usize, const FB: usize, const G
 ) -> WbRegsOutputs {
     let (b, s) = (&inp.bus, &inp.status);
     uut.reset.next = inp.reset;
+    uut.sample.next = inp.sample;
     uut.wb_cyc_i.next = b.wb_cyc_i;
     uut.wb_stb_i.next = b.wb_stb_i;
     uut.wb_we_i.next = b.wb_we_i;
@@ -425,6 +441,7 @@ fn hardware_reads_id_format_and_a_coherent_speed_by_hand() {
         };
         let inp = WbRegsInputs {
             reset: false,
+            sample: false,
             bus,
             status: *st,
         };
@@ -467,7 +484,9 @@ fn icarus<const N: usize, const S: usize, const C: usize, const FB: usize, const
             && cov.writes > n_ops / 5
             && cov.clears > 10
             && cov.irqs > 100
-            && cov.back_to_back > n_ops / 4,
+            && cov.back_to_back > n_ops / 4
+            && cov.snapshots > 100
+            && cov.sampled_reads > 100,
         "stimulus coverage {cov:?}"
     );
     let b = |v: bool| u8::from(v);
@@ -482,6 +501,7 @@ fn icarus<const N: usize, const S: usize, const C: usize, const FB: usize, const
             format!("{:x}", bus.wb_adr_i),
             format!("{:x}", bus.wb_dat_i),
             format!("{:x}", bus.wb_sel_i),
+            format!("{:x}", b(i.sample)),
             format!("{:x}", s.position),
             format!("{:x}", s.z_latch),
             format!("{:x}", b(s.index)),
@@ -529,6 +549,7 @@ fn icarus<const N: usize, const S: usize, const C: usize, const FB: usize, const
             ("wb_adr_i", regmap::ADDR_BITS),
             ("wb_dat_i", 32),
             ("wb_sel_i", 4),
+            ("sample", 1),
             ("position", C),
             ("z_latch", C),
             ("index", 1),
