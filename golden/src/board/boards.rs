@@ -78,8 +78,9 @@ impl Board {
     }
 
     /// The speed outputs a board's FPGA holds, where it cannot hold those asked: the
-    /// iCE40UP5K takes n3 alone (with all six, `encspeed_wb` and the bridge are 4 985 of
-    /// its 5 280 logic cells and nextpnr-ice40 finds no legal placement on some runs).
+    /// iCE40UP5K takes n3 alone (with all six, `encspeed_wb` and the bridge were 4 985 of
+    /// its 5 280 logic cells before the snapshot, and nextpnr-ice40 found no legal
+    /// placement on some runs; the snapshot adds some 570).
     pub fn estimators(self) -> Option<Vec<SpeedOutput>> {
         match self {
             Board::Hx8kBreakout => None,
