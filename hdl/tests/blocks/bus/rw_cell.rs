@@ -7,8 +7,9 @@ use hdl::bus::rw_cell::*;
 #[test]
 fn synthesises_and_lints_clean_narrow_and_full() {
     let (map, ecc) = crate::support::maps();
-    let ctrl = RwCell::<4>::new(map.reg("CTRL"));
-    crate::support::synthesises_and_lints("encspeed_rw_cell_4", ctrl);
+    // CTRL's RW fields end at HOLD, bit 9.
+    let ctrl = RwCell::<10>::new(map.reg("CTRL"));
+    crate::support::synthesises_and_lints("encspeed_rw_cell_10", ctrl);
     let c = RwCell::<32>::new(ecc.iter().find(|r| r.offset == ECC_C).unwrap());
     crate::support::synthesises_and_lints("encspeed_rw_cell_32", c);
 }
