@@ -446,7 +446,9 @@ mod tests {
     #[test]
     fn the_harness_reads_and_prints_every_port_in_list_order() {
         let cpp = harness("encspeed_wb", &wb_top_ports(), None);
-        assert!(cpp.contains("top.wb_sel_i = v[9];"), "{cpp}");
+        // reset enc_a enc_b enc_z sample wb_cyc_i wb_stb_i wb_we_i wb_adr_i wb_dat_i wb_sel_i
+        assert!(cpp.contains("top.sample = v[4];"), "{cpp}");
+        assert!(cpp.contains("top.wb_sel_i = v[10];"), "{cpp}");
         assert!(
             cpp.contains("(u)top.wb_dat_o,\n        (u)top.wb_ack_o,\n        (u)top.irq,"),
             "{cpp}"
