@@ -129,43 +129,34 @@ impl Snapshot {
     /// The snapshot of `st`.
     fn of(st: &CoreStatus, count: u32) -> Snapshot {
         Snapshot {
-            values: CoreStatus {
-                position: st.position,
-                nep: st.nep,
-                ndt: st.ndt,
-                speed_n1: st.speed_n1,
-                speed_n2: st.speed_n2,
-                speed_n3: st.speed_n3,
-                speed_pc: st.speed_pc,
-                speed_et: st.speed_et,
-                speed_mt: st.speed_mt,
-                valid: st.valid,
-                stalled: st.stalled,
-                direction: st.direction,
-                ..CoreStatus::default()
-            },
+            values: snapshot_fields(st, &CoreStatus::default()),
             count,
         }
     }
 
     /// `st` with the snapshot's values in place of the live ones.
     fn view(&self, st: &CoreStatus) -> CoreStatus {
-        let v = &self.values;
-        CoreStatus {
-            position: v.position,
-            nep: v.nep,
-            ndt: v.ndt,
-            speed_n1: v.speed_n1,
-            speed_n2: v.speed_n2,
-            speed_n3: v.speed_n3,
-            speed_pc: v.speed_pc,
-            speed_et: v.speed_et,
-            speed_mt: v.speed_mt,
-            valid: v.valid,
-            stalled: v.stalled,
-            direction: v.direction,
-            ..*st
-        }
+        snapshot_fields(&self.values, st)
+    }
+}
+
+/// `onto` with the fields a snapshot holds taken from `from`: `position`, `nep`, `ndt`, the
+/// six speeds, `valid`, `stalled`, `direction`.
+fn snapshot_fields(from: &CoreStatus, onto: &CoreStatus) -> CoreStatus {
+    CoreStatus {
+        position: from.position,
+        nep: from.nep,
+        ndt: from.ndt,
+        speed_n1: from.speed_n1,
+        speed_n2: from.speed_n2,
+        speed_n3: from.speed_n3,
+        speed_pc: from.speed_pc,
+        speed_et: from.speed_et,
+        speed_mt: from.speed_mt,
+        valid: from.valid,
+        stalled: from.stalled,
+        direction: from.direction,
+        ..*onto
     }
 }
 
