@@ -144,9 +144,9 @@ fn the_command_in_the_first_line_of_every_generated_file_regenerates_it() {
         .map(|e| e.unwrap().path())
         .collect();
     files.sort();
-    // Four tops, each with .v, _inst.v, .toml and .vlt, the two C headers, and the two
+    // Four tops, each with .v, _inst.v, .toml and .vlt, the two C headers, and the three
     // board tops' .v and .vlt.
-    assert_eq!(files.len(), 4 * 4 + 2 + 2 * 2, "{files:?}");
+    assert_eq!(files.len(), 4 * 4 + 2 + 3 * 2, "{files:?}");
     // Each distinct command is run once, into a directory of its own.
     let mut runs: std::collections::BTreeMap<String, PathBuf> = Default::default();
     for path in &files {

@@ -358,9 +358,10 @@ fn fusesoc_lints_every_shipped_top_and_fails_without_the_waivers() {
 }
 
 /// FuseSoC builds each board's bitstream from `encspeed.core` at the repository root with
-/// the open flow (yosys, nextpnr-ice40 at the board clock, icepack): the `.bin` exists,
-/// has the size of the device's bitstream, and nextpnr met the 12 MHz board clock (it
-/// fails the build otherwise; its report is read as well). docs/boards.md.
+/// the open flow (yosys; nextpnr-ice40 and icepack, or nextpnr-ecp5 and ecppack; each at
+/// the board clock): the bitstream exists and is the device's (icepack's image size; the
+/// ECP5 device and JTAG ID that ecppack writes in its header), and nextpnr met the board
+/// clock (it fails the build otherwise; its report is read as well). docs/boards.md.
 #[test]
 fn fusesoc_builds_each_board_bitstream_at_the_board_clock() {
     use golden::board::boards::Board;
@@ -377,7 +378,7 @@ fn fusesoc_builds_each_board_bitstream_at_the_board_clock() {
         assert!(text.contains(&options), "{}: {options}", board.name());
     }
     let build = tools::work_dir("fusesoc", "boards").unwrap();
-    // The two boards side by side: each flow is single-threaded.
+    // The boards side by side: each flow is single-threaded.
     let runs: Vec<(Board, std::thread::JoinHandle<Result<String, String>>)> = Board::ALL
         .into_iter()
         .map(|board| {
@@ -395,20 +396,38 @@ fn fusesoc_builds_each_board_bitstream_at_the_board_clock() {
             .unwrap()
             .unwrap_or_else(|e| panic!("{}: {e}", board.name()));
         let work = build.join(board.name());
-        let bin = find_file(&work, "encspeed_ip_encspeed_0.1.0.bin")
-            .unwrap_or_else(|| panic!("{}: no .bin under {}\n{log}", board.name(), work.display()));
-        let size = std::fs::metadata(&bin).unwrap().len();
-        // icepack's image sizes: 135 100 bytes for the HX8K, 104 090 for the UP5K.
-        let want = match board {
-            Board::Hx8kBreakout => 135_100,
-            Board::Icebreaker => 104_090,
-        };
-        assert_eq!(size, want, "{}: {} bytes", board.name(), size);
-        let pnr =
-            std::fs::read_to_string(bin.with_file_name("next.log")).unwrap_or_else(|_| log.clone());
+        let name = format!("encspeed_ip_encspeed_0.1.0.{}", board.bitstream_extension());
+        let bitstream = find_file(&work, &name).unwrap_or_else(|| {
+            panic!(
+                "{}: no {name} under {}\n{log}",
+                board.name(),
+                work.display()
+            )
+        });
+        let image = std::fs::read(&bitstream).unwrap();
+        match board {
+            // icepack's image sizes: 135 100 bytes for the HX8K, 104 090 for the UP5K.
+            Board::Hx8kBreakout => assert_eq!(image.len(), 135_100, "hx8k_breakout"),
+            Board::Icebreaker => assert_eq!(image.len(), 104_090, "icebreaker"),
+            // ecppack's header names the part, and its VERIFY_ID command (0xE2, three
+            // zero bytes) carries the LFE5U-85F's JTAG IDCODE, 0x41113043 (Lattice's
+            // ECP5 sysCONFIG guide): a configuration port refuses an image for another die.
+            Board::Ulx3s => {
+                let head = String::from_utf8_lossy(&image[..64]);
+                assert!(head.contains("Part: LFE5U-85F-6CABGA381"), "ulx3s: {head}");
+                let verify_id = [0xE2, 0, 0, 0, 0x41, 0x11, 0x30, 0x43];
+                assert!(
+                    image[..256].windows(8).any(|w| w == verify_id),
+                    "ulx3s: no VERIFY_ID 0x41113043 in the header"
+                );
+            }
+        }
+        let pnr = std::fs::read_to_string(bitstream.with_file_name("next.log"))
+            .unwrap_or_else(|_| log.clone());
+        let met = format!("PASS at {}.00 MHz", board.clock_hz() / 1_000_000);
         assert!(
-            pnr.contains("PASS at 12.00 MHz"),
-            "{}: nextpnr did not report the 12 MHz clock met\n{pnr}",
+            pnr.contains(&met),
+            "{}: nextpnr did not report the board clock met ({met})\n{pnr}",
             board.name()
         );
     }

@@ -2,7 +2,8 @@
 //! `EncspeedBoard`: the top of a board bitstream. `encspeed_wb` with the UART-to-Wishbone
 //! bridge [`UartWishbone`] as its bus master, a power-on reset and four LEDs, all on the
 //! board's oscillator. The boards, their clock, baud and IP parameters:
-//! [`golden::board::boards`]; pins: `constraints/<board>.pcf`; docs/boards.md.
+//! [`golden::board::boards`]; pins: `constraints/<board>.pcf` (iCE40) or `.lpf` (ECP5);
+//! docs/boards.md.
 //!
 //! ```text
 //!  rx ──► UartWishbone ──wb_*──► EncspeedWb ◄── enc_a, enc_b, enc_z
@@ -12,7 +13,7 @@
 //!
 //! | port | dir | width | meaning |
 //! |---|---|---|---|
-//! | `clock` | in | 1 | the board oscillator (12 MHz on the shipped boards) |
+//! | `clock` | in | 1 | the board oscillator (12 MHz on the iCE40 boards, 25 MHz on the ULX3S) |
 //! | `rx` | in | 1 | serial line from the host (asynchronous, idle 1) |
 //! | `tx` | out | 1 | serial line to the host (idle 1 from power-up) |
 //! | `enc_a`, `enc_b`, `enc_z` | in | 1 | encoder channels (asynchronous; pulled up by the PCF) |
@@ -38,7 +39,8 @@ use rust_hdl::prelude::*;
 /// Width of the power-on reset counter: `reset` is high for its 2^4 = 16 first edges.
 const POR_BITS: usize = 4;
 /// Width of the heartbeat counter: its top bit (23, written as a literal in `update`, where
-/// rust-hdl cannot emit a named constant) toggles every 2^23 cycles (0.70 s at 12 MHz).
+/// rust-hdl cannot emit a named constant) toggles every 2^23 cycles (0.70 s at 12 MHz,
+/// 0.34 s at 25 MHz).
 const BEAT_BITS: usize = 24;
 
 /// `encspeed_wb` behind the UART bridge, with a power-on reset and four LEDs.

@@ -3,7 +3,8 @@
 //! `.vlt`): one top per board of
 //! [`Board::ALL`], its `encspeed_wb` generated for the user's parameters at the board clock
 //! ([`Board::params`]). `encspeed generate` writes them beside the IP; the FuseSoC core's
-//! board targets build their bitstreams with `constraints/<board>.pcf`; docs/boards.md.
+//! board targets build their bitstreams with the pins of [`Board::constraints_file`];
+//! docs/boards.md.
 
 use crate::sim::board_sim::build_board;
 use golden::board::boards::{board_ports, Board};

@@ -5,15 +5,18 @@
 //!
 //! Each source file in `lint/` explains each of its waivers. A top that contains another
 //! carries the waivers of what it contains, retargeted to its own file: `encspeed_wb` those
-//! of the core, `encspeed_ecc` the core's, `encspeed_ecc_wb` `encspeed_ecc`'s, each board
-//! top `encspeed_wb`'s.
+//! of the core and of the Wishbone register file, `encspeed_ecc` the core's,
+//! `encspeed_ecc_wb` `encspeed_ecc`'s and the register file's, each board top
+//! `encspeed_wb`'s.
 
 use super::tops::Top;
 
 /// `encspeed_core.v`'s waivers.
 pub const CORE: &str = include_str!("lint/core.vlt");
-/// What `encspeed_wb.v` adds.
+/// What `encspeed_wb.v` adds to the core's and the register file's.
 const WB: &str = include_str!("lint/wb.vlt");
+/// What the Wishbone register file (`WbRegs`) of `encspeed_wb` and `encspeed_ecc_wb` adds.
+const REGS: &str = include_str!("lint/regs.vlt");
 /// What `encspeed_ecc.v` adds.
 const ECC: &str = include_str!("lint/ecc.vlt");
 /// What `encspeed_ecc_wb.v` adds.
@@ -26,9 +29,9 @@ const BOARD: &str = include_str!("lint/board.vlt");
 pub fn waivers(top: Top) -> String {
     let (sources, from): (&[&str], &str) = match top {
         Top::Core => (&[CORE], "encspeed_core.v"),
-        Top::Wb => (&[CORE, WB], "encspeed_wb.v"),
+        Top::Wb => (&[CORE, WB, REGS], "encspeed_wb.v"),
         Top::Ecc => (&[CORE, ECC], "encspeed_ecc.v"),
-        Top::EccWb => (&[CORE, ECC, ECC_WB], "encspeed_ecc_wb.v"),
+        Top::EccWb => (&[CORE, ECC, REGS, ECC_WB], "encspeed_ecc_wb.v"),
     };
     retarget(sources, from, &top.verilog_file())
 }
@@ -36,7 +39,7 @@ pub fn waivers(top: Top) -> String {
 /// The waivers of the board top `module` (`<module>.v`): `encspeed_wb`'s and the board's.
 pub fn board_waivers(module: &str) -> String {
     retarget(
-        &[CORE, WB, BOARD],
+        &[CORE, WB, REGS, BOARD],
         "encspeed_board.v",
         &format!("{module}.v"),
     )
