@@ -15,7 +15,7 @@
 //   input  enc_b: encoder channel B, asynchronous; forward = A leads B by 90 degrees
 //   input  enc_z: encoder index Z, asynchronous
 //   input  cfg_dt[23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered: dt_active shows a change one edge later, the dt windows use it from the edge after that
-//   input  cfg_timeout[23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid compare with it from the edge that samples it
+//   input  cfg_timeout[23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid, themselves registered, show a new timeout from the edge after the one that samples it
 //   input  cfg_filter[15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off; registered (acts one edge later)
 //   input  cfg_mode[1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Registered: a change resets the whole core (as reset) at the edge after the one that samples it, with the new mode in place
 //   input  cfg_z_mode[1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset; registered (acts one edge later)
@@ -35,8 +35,8 @@
 //   output speed_et[40:0]: fixed-space (elapsed time) speed dt/period of the last period at the window end; 0 before a period of the current direction; format as speed_n1
 //   output speed_mt[40:0]: M/T speed: steps of the window over the exact clock count spanning them, times dt; 0 for a window without steps; format as speed_n1
 //   output baseline_strobe: one cycle: speed_pc, speed_et, speed_mt have just been written
-//   output valid: speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration
-//   output stalled: no step for the zero-speed timeout: the speed is below one step per timeout
+//   output valid: speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration; a register, one edge after those conditions
+//   output stalled: no step for the zero-speed timeout: the speed is below one step per timeout; a register, one edge after Cdt reaches the timeout
 //   output fault_illegal: sticky: A and B changed between two samples (an illegal transition)
 //   output fault_overspeed: sticky: the A or B filter rejected a level shorter than cfg_filter cycles (a glitch, or edges closer than the filter can pass)
 //   output fault_revolution: sticky: a revolution of one direction between two index edges had a count other than lines*2^s
@@ -822,6 +822,12 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
     reg  cfg_error_reg$d;
     wire  cfg_error_reg$q;
     reg  cfg_error_reg$clock;
+    reg  stalled_reg$d;
+    wire  stalled_reg$q;
+    reg  stalled_reg$clock;
+    reg  valid_reg$d;
+    wire  valid_reg$q;
+    reg  valid_reg$clock;
     reg  mode_reset$clock;
     reg  mode_reset$reset;
     reg  [1:0] mode_reset$cfg_mode;
@@ -1093,6 +1099,16 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         .q(cfg_error_reg$q),
         .clock(cfg_error_reg$clock)
     );
+    encspeed_ecc$core$stalled_reg stalled_reg(
+        .d(stalled_reg$d),
+        .q(stalled_reg$q),
+        .clock(stalled_reg$clock)
+    );
+    encspeed_ecc$core$valid_reg valid_reg(
+        .d(valid_reg$d),
+        .q(valid_reg$q),
+        .clock(valid_reg$clock)
+    );
     encspeed_ecc$core$mode_reset mode_reset(
         .clock(mode_reset$clock),
         .reset(mode_reset$reset),
@@ -1134,6 +1150,8 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         filter_reg$clock = clock;
         z_mode_reg$clock = clock;
         cfg_error_reg$clock = clock;
+        stalled_reg$clock = clock;
+        valid_reg$clock = clock;
         window_last$clock = clock;
         restart_pos$clock = clock;
         position_before$clock = clock;
@@ -1145,6 +1163,8 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         filter_reg$d = filter_reg$q;
         z_mode_reg$d = z_mode_reg$q;
         cfg_error_reg$d = cfg_error_reg$q;
+        stalled_reg$d = stalled_reg$q;
+        valid_reg$d = valid_reg$q;
         window_last$d = window_last$q;
         restart_pos$d = restart_pos$q;
         position_before$d = position_before$q;
@@ -1320,8 +1340,10 @@ module encspeed_ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_fi
         speed_et = baseline$speed_et;
         speed_mt = baseline$speed_mt;
         baseline_strobe = baseline$valid;
-        stalled = timebase$stalled;
-        valid = calc$have_speeds & ~timebase$stalled & ~cfg_error_reg$q;
+        stalled_reg$d = timebase$stalled & ~rst;
+        valid_reg$d = calc$have_speeds & ~timebase$stalled & ~cfg_error_reg$q & ~rst;
+        stalled = stalled_reg$q;
+        valid = valid_reg$q;
         fault_illegal = faults$fault_illegal;
         fault_overspeed = faults$fault_overspeed;
         fault_revolution = faults$fault_revolution;
@@ -9571,6 +9593,25 @@ module encspeed_ecc$core$restart_pos(d,q,clock);
 endmodule // encspeed_ecc$core$restart_pos
 
 
+module encspeed_ecc$core$stalled_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$stalled_reg
+
+
 module encspeed_ecc$core$startup(clock,reset,cfg_filter,front_reset);
     
     // Module arguments
@@ -10699,6 +10740,25 @@ module encspeed_ecc$core$timeout_reg(d,q,clock);
     end
           
 endmodule // encspeed_ecc$core$timeout_reg
+
+
+module encspeed_ecc$core$valid_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc$core$valid_reg
 
 
 module encspeed_ecc$core$window_last(d,q,clock);

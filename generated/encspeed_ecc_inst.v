@@ -12,7 +12,7 @@ encspeed_ecc u_encspeed_ecc (
     .enc_b            (enc_b           ), // input: encoder channel B, asynchronous; forward = A leads B by 90 degrees
     .enc_z            (enc_z           ), // input: encoder index Z, asynchronous
     .cfg_dt           (cfg_dt          ), // input [23:0]: dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered: dt_active shows a change one edge later, the dt windows use it from the edge after that
-    .cfg_timeout      (cfg_timeout     ), // input [23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid compare with it from the edge that samples it
+    .cfg_timeout      (cfg_timeout     ), // input [23:0]: zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid, themselves registered, show a new timeout from the edge after the one that samples it
     .cfg_filter       (cfg_filter      ), // input [15:0]: glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off; registered (acts one edge later)
     .cfg_mode         (cfg_mode        ), // input [1:0]: decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Registered: a change resets the whole core (as reset) at the edge after the one that samples it, with the new mode in place
     .cfg_z_mode       (cfg_z_mode      ), // input [1:0]: index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset; registered (acts one edge later)
@@ -32,8 +32,8 @@ encspeed_ecc u_encspeed_ecc (
     .speed_et         (speed_et        ), // output [40:0]: fixed-space (elapsed time) speed dt/period of the last period at the window end; 0 before a period of the current direction; format as speed_n1
     .speed_mt         (speed_mt        ), // output [40:0]: M/T speed: steps of the window over the exact clock count spanning them, times dt; 0 for a window without steps; format as speed_n1
     .baseline_strobe  (baseline_strobe ), // output: one cycle: speed_pc, speed_et, speed_mt have just been written
-    .valid            (valid           ), // output: speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration
-    .stalled          (stalled         ), // output: no step for the zero-speed timeout: the speed is below one step per timeout
+    .valid            (valid           ), // output: speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration; a register, one edge after those conditions
+    .stalled          (stalled         ), // output: no step for the zero-speed timeout: the speed is below one step per timeout; a register, one edge after Cdt reaches the timeout
     .fault_illegal    (fault_illegal   ), // output: sticky: A and B changed between two samples (an illegal transition)
     .fault_overspeed  (fault_overspeed ), // output: sticky: the A or B filter rejected a level shorter than cfg_filter cycles (a glitch, or edges closer than the filter can pass)
     .fault_revolution (fault_revolution), // output: sticky: a revolution of one direction between two index edges had a count other than lines*2^s

@@ -4,7 +4,7 @@
 // Parameters: clock_hz = 100000000, lines = 1024, dt_cycles = 100000, counter_bits = 24, timeout_s = 1, estimators = n1,n2,n3,pc,et,mt
 // Derived: omega_lim = 0.9765625 rev/s at dt_cycles, timeout_dt = 1000 dt intervals, counters saturate at 16777215
 // Function: encspeed_ecc (the core with its eccentricity correctors and identification; its logic is included in this file) behind one Wishbone B4 classic window, 32-bit data, 8-bit byte address: offsets below 0x90 are encspeed_wb's registers (encspeed_regs.h, map 1.1), offsets from 0x90 the eccentricity window (encspeed_ecc_regs.h, map 1.0); docs/registers.md.
-// Bus: a request (wb_cyc_i & wb_stb_i while wb_ack_o is low) is executed at the edge that samples it and acknowledged in the cycle after; two cycles per access; no wb_err_o.
+// Bus: a request (wb_cyc_i & wb_stb_i while the slave is idle) is executed at the edge that samples it and acknowledged in the cycle after the next edge; three cycles per access; no wb_err_o.
 // Speeds: 41 bits, speed_frac_bits = 16: read SPEED_*_LO (latches HI) then SPEED_*_HI, a 64-bit sign extension; value = raw * 2^-16 omega_lim.
 // Snapshot: sample high (or a write of 1 to CTRL.TRIGGER) stores position, nep, ndt, the speeds and valid/stalled/direction of one cycle; CTRL.SAMPLED = 1 reads them in place of the live values; CTRL.HOLD = 1 ignores sample; SNAP_COUNT counts snapshots.
 // A write that changes CTRL.MODE resets the core (not the registers) at the next edge.
@@ -22,7 +22,7 @@
 //   input  wb_dat_i[31:0]: Wishbone: write data
 //   input  wb_sel_i[3:0]: Wishbone: byte lanes of a write (lane j = bits 8j+7..8j)
 //   output wb_dat_o[31:0]: Wishbone: read data, valid with wb_ack_o (0 otherwise)
-//   output wb_ack_o: Wishbone: acknowledge, high the one cycle after the request edge
+//   output wb_ack_o: Wishbone: acknowledge, high for one cycle from the edge after the request edge
 //   output irq: interrupt request, level: (IRQ_STATUS & IRQ_ENABLE) != 0, a register output
 
 
@@ -1152,6 +1152,12 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
     reg  cfg_error_reg$d;
     wire  cfg_error_reg$q;
     reg  cfg_error_reg$clock;
+    reg  stalled_reg$d;
+    wire  stalled_reg$q;
+    reg  stalled_reg$clock;
+    reg  valid_reg$d;
+    wire  valid_reg$q;
+    reg  valid_reg$clock;
     reg  mode_reset$clock;
     reg  mode_reset$reset;
     reg  [1:0] mode_reset$cfg_mode;
@@ -1423,6 +1429,16 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         .q(cfg_error_reg$q),
         .clock(cfg_error_reg$clock)
     );
+    encspeed_ecc_wb$ecc$core$stalled_reg stalled_reg(
+        .d(stalled_reg$d),
+        .q(stalled_reg$q),
+        .clock(stalled_reg$clock)
+    );
+    encspeed_ecc_wb$ecc$core$valid_reg valid_reg(
+        .d(valid_reg$d),
+        .q(valid_reg$q),
+        .clock(valid_reg$clock)
+    );
     encspeed_ecc_wb$ecc$core$mode_reset mode_reset(
         .clock(mode_reset$clock),
         .reset(mode_reset$reset),
@@ -1464,6 +1480,8 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         filter_reg$clock = clock;
         z_mode_reg$clock = clock;
         cfg_error_reg$clock = clock;
+        stalled_reg$clock = clock;
+        valid_reg$clock = clock;
         window_last$clock = clock;
         restart_pos$clock = clock;
         position_before$clock = clock;
@@ -1475,6 +1493,8 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         filter_reg$d = filter_reg$q;
         z_mode_reg$d = z_mode_reg$q;
         cfg_error_reg$d = cfg_error_reg$q;
+        stalled_reg$d = stalled_reg$q;
+        valid_reg$d = valid_reg$q;
         window_last$d = window_last$q;
         restart_pos$d = restart_pos$q;
         position_before$d = position_before$q;
@@ -1650,8 +1670,10 @@ module encspeed_ecc_wb$ecc$core(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout
         speed_et = baseline$speed_et;
         speed_mt = baseline$speed_mt;
         baseline_strobe = baseline$valid;
-        stalled = timebase$stalled;
-        valid = calc$have_speeds & ~timebase$stalled & ~cfg_error_reg$q;
+        stalled_reg$d = timebase$stalled & ~rst;
+        valid_reg$d = calc$have_speeds & ~timebase$stalled & ~cfg_error_reg$q & ~rst;
+        stalled = stalled_reg$q;
+        valid = valid_reg$q;
         fault_illegal = faults$fault_illegal;
         fault_overspeed = faults$fault_overspeed;
         fault_revolution = faults$fault_revolution;
@@ -9901,6 +9923,25 @@ module encspeed_ecc_wb$ecc$core$restart_pos(d,q,clock);
 endmodule // encspeed_ecc_wb$ecc$core$restart_pos
 
 
+module encspeed_ecc_wb$ecc$core$stalled_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$stalled_reg
+
+
 module encspeed_ecc_wb$ecc$core$startup(clock,reset,cfg_filter,front_reset);
     
     // Module arguments
@@ -11029,6 +11070,25 @@ module encspeed_ecc_wb$ecc$core$timeout_reg(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$ecc$core$timeout_reg
+
+
+module encspeed_ecc_wb$ecc$core$valid_reg(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$ecc$core$valid_reg
 
 
 module encspeed_ecc_wb$ecc$core$window_last(d,q,clock);
@@ -24099,7 +24159,15 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
     wire  file$wb_ack_o;
     wire  file$irq;
     reg  [31:0] file$events;
-    reg  [31:0] file$cells;
+    reg  [31:0] file$group0;
+    reg  [31:0] file$group1;
+    reg  [31:0] file$group2;
+    reg  [31:0] file$group3;
+    reg  [31:0] file$group4;
+    reg  [31:0] file$group5;
+    reg  [31:0] file$group6;
+    reg  [31:0] file$group7;
+    wire  [31:0] file$irq_rdata;
     wire  [7:0] file$adr;
     wire  file$rd;
     wire  file$wr;
@@ -24292,7 +24360,15 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
         .wb_ack_o(file$wb_ack_o),
         .irq(file$irq),
         .events(file$events),
-        .cells(file$cells),
+        .group0(file$group0),
+        .group1(file$group1),
+        .group2(file$group2),
+        .group3(file$group3),
+        .group4(file$group4),
+        .group5(file$group5),
+        .group6(file$group6),
+        .group7(file$group7),
+        .irq_rdata(file$irq_rdata),
         .adr(file$adr),
         .rd(file$rd),
         .wr(file$wr),
@@ -24690,7 +24766,14 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
         mt$adr = file$adr;
         mt$rd = file$rd;
         mt$value = snapshot$seen_mt;
-        file$cells = id$rdata | version$rdata | param0$rdata | param1$rdata | lines$rdata | dt_default$rdata | timeout_default$rdata | clock_hz$rdata | ctrl$rdata | r_cfg_dt$rdata | r_cfg_timeout$rdata | r_cfg_filter$rdata | status$rdata | r_position$rdata | r_z_latch$rdata | r_nep$rdata | r_ndt$rdata | n1$rdata | n2$rdata | n3$rdata | pc$rdata | et$rdata | mt$rdata | glitch$rdata | illegal$rdata | rev$rdata | snap_count$rdata;
+        file$group0 = id$rdata | version$rdata | param0$rdata | param1$rdata | lines$rdata | dt_default$rdata | timeout_default$rdata | clock_hz$rdata;
+        file$group1 = ctrl$rdata | r_cfg_dt$rdata | r_cfg_timeout$rdata | r_cfg_filter$rdata;
+        file$group2 = status$rdata | file$irq_rdata;
+        file$group3 = r_position$rdata | r_z_latch$rdata | r_nep$rdata | r_ndt$rdata;
+        file$group4 = n1$rdata | n2$rdata;
+        file$group5 = n3$rdata | pc$rdata;
+        file$group6 = et$rdata | mt$rdata;
+        file$group7 = glitch$rdata | illegal$rdata | rev$rdata | snap_count$rdata;
         fault_rose = (fault_illegal & (~prev_illegal$q)) | (fault_overspeed & (~prev_overspeed$q)) | (fault_revolution & (~prev_revolution$q));
         events = z32;
         if (speed_strobe) begin
@@ -25149,7 +25232,7 @@ module encspeed_ecc_wb$regs$fault_clear$fired(d,q,clock);
 endmodule // encspeed_ecc_wb$regs$fault_clear$fired
 
 
-module encspeed_ecc_wb$regs$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,events,cells,adr,rd,wr,lanes,ones);
+module encspeed_ecc_wb$regs$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,events,group0,group1,group2,group3,group4,group5,group6,group7,irq_rdata,adr,rd,wr,lanes,ones);
     
     // Module arguments
     input wire  clock;
@@ -25164,7 +25247,15 @@ module encspeed_ecc_wb$regs$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,
     output reg  wb_ack_o;
     output reg  irq;
     input wire  [31:0] events;
-    input wire  [31:0] cells;
+    input wire  [31:0] group0;
+    input wire  [31:0] group1;
+    input wire  [31:0] group2;
+    input wire  [31:0] group3;
+    input wire  [31:0] group4;
+    input wire  [31:0] group5;
+    input wire  [31:0] group6;
+    input wire  [31:0] group7;
+    output reg  [31:0] irq_rdata;
     output reg  [7:0] adr;
     output reg  rd;
     output reg  wr;
@@ -25198,7 +25289,14 @@ module encspeed_ecc_wb$regs$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,
     reg  read$clock;
     reg  read$reset;
     reg  read$rd;
-    reg  [31:0] read$cells;
+    reg  [31:0] read$group0;
+    reg  [31:0] read$group1;
+    reg  [31:0] read$group2;
+    reg  [31:0] read$group3;
+    reg  [31:0] read$group4;
+    reg  [31:0] read$group5;
+    reg  [31:0] read$group6;
+    reg  [31:0] read$group7;
     wire  [31:0] read$wb_dat_o;
     
     // Sub module instances
@@ -25233,7 +25331,14 @@ module encspeed_ecc_wb$regs$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,
         .clock(read$clock),
         .reset(read$reset),
         .rd(read$rd),
-        .cells(read$cells),
+        .group0(read$group0),
+        .group1(read$group1),
+        .group2(read$group2),
+        .group3(read$group3),
+        .group4(read$group4),
+        .group5(read$group5),
+        .group6(read$group6),
+        .group7(read$group7),
         .wb_dat_o(read$wb_dat_o)
     );
     
@@ -25264,7 +25369,15 @@ module encspeed_ecc_wb$regs$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,
         irq = irqs$irq;
         read$reset = reset;
         read$rd = front$rd;
-        read$cells = cells | irqs$rdata;
+        read$group0 = group0;
+        read$group1 = group1;
+        read$group2 = group2;
+        read$group3 = group3;
+        read$group4 = group4;
+        read$group5 = group5;
+        read$group6 = group6;
+        read$group7 = group7;
+        irq_rdata = irqs$rdata;
         wb_dat_o = read$wb_dat_o;
     end
     
@@ -25301,6 +25414,9 @@ module encspeed_ecc_wb$regs$file$front(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_
     reg  ack$d;
     wire  ack$q;
     reg  ack$clock;
+    reg  pending$d;
+    wire  pending$q;
+    reg  pending$clock;
     
     // Local signals
     reg  req;
@@ -25312,14 +25428,23 @@ module encspeed_ecc_wb$regs$file$front(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_
         .q(ack$q),
         .clock(ack$clock)
     );
+    encspeed_ecc_wb$regs$file$front$pending pending(
+        .d(pending$d),
+        .q(pending$q),
+        .clock(pending$clock)
+    );
     
     // Update code
     always @(*) begin
         ack$clock = clock;
+        pending$clock = clock;
         ack$d = ack$q;
-        req = wb_cyc_i & wb_stb_i & (~ack$q);
-        ack$d = req;
+        pending$d = pending$q;
+        req = wb_cyc_i & wb_stb_i & (~ack$q) & (~pending$q);
+        pending$d = req;
+        ack$d = pending$q;
         if (reset) begin
+            pending$d = 1'b0;
             ack$d = 1'b0;
         end
         l_lanes = z32;
@@ -25363,6 +25488,25 @@ module encspeed_ecc_wb$regs$file$front$ack(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$regs$file$front$ack
+
+
+module encspeed_ecc_wb$regs$file$front$pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$front$pending
 
 
 module encspeed_ecc_wb$regs$file$irqs(clock,reset,adr,wr,lanes,ones,events,rdata,irq);
@@ -25477,24 +25621,95 @@ module encspeed_ecc_wb$regs$file$irqs$status(d,q,clock);
 endmodule // encspeed_ecc_wb$regs$file$irqs$status
 
 
-module encspeed_ecc_wb$regs$file$read(clock,reset,rd,cells,wb_dat_o);
+module encspeed_ecc_wb$regs$file$read(clock,reset,rd,group0,group1,group2,group3,group4,group5,group6,group7,wb_dat_o);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  rd;
-    input wire  [31:0] cells;
+    input wire  [31:0] group0;
+    input wire  [31:0] group1;
+    input wire  [31:0] group2;
+    input wire  [31:0] group3;
+    input wire  [31:0] group4;
+    input wire  [31:0] group5;
+    input wire  [31:0] group6;
+    input wire  [31:0] group7;
     output reg  [31:0] wb_dat_o;
     
     // Constant declarations
     localparam  z32 = 32'h0;
     
     // Stub signals
+    reg  [31:0] part0$d;
+    wire  [31:0] part0$q;
+    reg  part0$clock;
+    reg  [31:0] part1$d;
+    wire  [31:0] part1$q;
+    reg  part1$clock;
+    reg  [31:0] part2$d;
+    wire  [31:0] part2$q;
+    reg  part2$clock;
+    reg  [31:0] part3$d;
+    wire  [31:0] part3$q;
+    reg  part3$clock;
+    reg  [31:0] part4$d;
+    wire  [31:0] part4$q;
+    reg  part4$clock;
+    reg  [31:0] part5$d;
+    wire  [31:0] part5$q;
+    reg  part5$clock;
+    reg  [31:0] part6$d;
+    wire  [31:0] part6$q;
+    reg  part6$clock;
+    reg  [31:0] part7$d;
+    wire  [31:0] part7$q;
+    reg  part7$clock;
     reg  [31:0] dat$d;
     wire  [31:0] dat$q;
     reg  dat$clock;
     
     // Sub module instances
+    encspeed_ecc_wb$regs$file$read$part0 part0(
+        .d(part0$d),
+        .q(part0$q),
+        .clock(part0$clock)
+    );
+    encspeed_ecc_wb$regs$file$read$part1 part1(
+        .d(part1$d),
+        .q(part1$q),
+        .clock(part1$clock)
+    );
+    encspeed_ecc_wb$regs$file$read$part2 part2(
+        .d(part2$d),
+        .q(part2$q),
+        .clock(part2$clock)
+    );
+    encspeed_ecc_wb$regs$file$read$part3 part3(
+        .d(part3$d),
+        .q(part3$q),
+        .clock(part3$clock)
+    );
+    encspeed_ecc_wb$regs$file$read$part4 part4(
+        .d(part4$d),
+        .q(part4$q),
+        .clock(part4$clock)
+    );
+    encspeed_ecc_wb$regs$file$read$part5 part5(
+        .d(part5$d),
+        .q(part5$q),
+        .clock(part5$clock)
+    );
+    encspeed_ecc_wb$regs$file$read$part6 part6(
+        .d(part6$d),
+        .q(part6$q),
+        .clock(part6$clock)
+    );
+    encspeed_ecc_wb$regs$file$read$part7 part7(
+        .d(part7$d),
+        .q(part7$q),
+        .clock(part7$clock)
+    );
     encspeed_ecc_wb$regs$file$read$dat dat(
         .d(dat$d),
         .q(dat$q),
@@ -25503,11 +25718,45 @@ module encspeed_ecc_wb$regs$file$read(clock,reset,rd,cells,wb_dat_o);
     
     // Update code
     always @(*) begin
+        part0$clock = clock;
+        part1$clock = clock;
+        part2$clock = clock;
+        part3$clock = clock;
+        part4$clock = clock;
+        part5$clock = clock;
+        part6$clock = clock;
+        part7$clock = clock;
         dat$clock = clock;
+        part0$d = part0$q;
+        part1$d = part1$q;
+        part2$d = part2$q;
+        part3$d = part3$q;
+        part4$d = part4$q;
+        part5$d = part5$q;
+        part6$d = part6$q;
+        part7$d = part7$q;
         dat$d = dat$q;
-        dat$d = z32;
+        part0$d = z32;
+        part1$d = z32;
+        part2$d = z32;
+        part3$d = z32;
+        part4$d = z32;
+        part5$d = z32;
+        part6$d = z32;
+        part7$d = z32;
         if (rd & (~reset)) begin
-            dat$d = cells;
+            part0$d = group0;
+            part1$d = group1;
+            part2$d = group2;
+            part3$d = group3;
+            part4$d = group4;
+            part5$d = group5;
+            part6$d = group6;
+            part7$d = group7;
+        end
+        dat$d = part0$q | part1$q | part2$q | part3$q | part4$q | part5$q | part6$q | part7$q;
+        if (reset) begin
+            dat$d = z32;
         end
         wb_dat_o = dat$q;
     end
@@ -25532,6 +25781,158 @@ module encspeed_ecc_wb$regs$file$read$dat(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$regs$file$read$dat
+
+
+module encspeed_ecc_wb$regs$file$read$part0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$read$part0
+
+
+module encspeed_ecc_wb$regs$file$read$part1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$read$part1
+
+
+module encspeed_ecc_wb$regs$file$read$part2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$read$part2
+
+
+module encspeed_ecc_wb$regs$file$read$part3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$read$part3
+
+
+module encspeed_ecc_wb$regs$file$read$part4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$read$part4
+
+
+module encspeed_ecc_wb$regs$file$read$part5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$read$part5
+
+
+module encspeed_ecc_wb$regs$file$read$part6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$read$part6
+
+
+module encspeed_ecc_wb$regs$file$read$part7(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$regs$file$read$part7
 
 
 module encspeed_ecc_wb$regs$glitch(adr,value,rdata);
@@ -29263,7 +29664,15 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
     wire  file$wb_ack_o;
     wire  file$irq;
     reg  [31:0] file$events;
-    reg  [31:0] file$cells;
+    reg  [31:0] file$group0;
+    reg  [31:0] file$group1;
+    reg  [31:0] file$group2;
+    reg  [31:0] file$group3;
+    reg  [31:0] file$group4;
+    reg  [31:0] file$group5;
+    reg  [31:0] file$group6;
+    reg  [31:0] file$group7;
+    wire  [31:0] file$irq_rdata;
     wire  [7:0] file$adr;
     wire  file$rd;
     wire  file$wr;
@@ -29380,7 +29789,15 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
         .wb_ack_o(file$wb_ack_o),
         .irq(file$irq),
         .events(file$events),
-        .cells(file$cells),
+        .group0(file$group0),
+        .group1(file$group1),
+        .group2(file$group2),
+        .group3(file$group3),
+        .group4(file$group4),
+        .group5(file$group5),
+        .group6(file$group6),
+        .group7(file$group7),
+        .irq_rdata(file$irq_rdata),
         .adr(file$adr),
         .rd(file$rd),
         .wr(file$wr),
@@ -29622,7 +30039,14 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
         c1$value = ident_sum_cos[(32'h20)+:(32)];
         c2$adr = file$adr;
         c2$value = ident_sum_cos[(32'h40)+:(8)];
-        file$cells = id$rdata | version$rdata | status$rdata | stage_c$rdata | stage_d$rdata | mtc$rdata | n3c$rdata | count$rdata | t_min$rdata | t_max$rdata | p_min$rdata | p_max$rdata | t0$rdata | t1$rdata | t2$rdata | s0$rdata | s1$rdata | s2$rdata | c0$rdata | c1$rdata | c2$rdata;
+        file$group0 = id$rdata | version$rdata | status$rdata;
+        file$group1 = stage_c$rdata | stage_d$rdata | file$irq_rdata;
+        file$group2 = mtc$rdata | n3c$rdata;
+        file$group3 = count$rdata | t_min$rdata | t_max$rdata | p_min$rdata | p_max$rdata;
+        file$group4 = t0$rdata | t1$rdata | t2$rdata | s0$rdata;
+        file$group5 = s1$rdata | s2$rdata | c0$rdata | c1$rdata;
+        file$group6 = c2$rdata;
+        file$group7 = z32;
         events = z32;
         if (mtc_strobe) begin
             events = events | e_mtc;
@@ -30310,7 +30734,7 @@ module encspeed_ecc_wb$window$count(adr,value,rdata);
 endmodule // encspeed_ecc_wb$window$count
 
 
-module encspeed_ecc_wb$window$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,events,cells,adr,rd,wr,lanes,ones);
+module encspeed_ecc_wb$window$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,events,group0,group1,group2,group3,group4,group5,group6,group7,irq_rdata,adr,rd,wr,lanes,ones);
     
     // Module arguments
     input wire  clock;
@@ -30325,7 +30749,15 @@ module encspeed_ecc_wb$window$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     output reg  wb_ack_o;
     output reg  irq;
     input wire  [31:0] events;
-    input wire  [31:0] cells;
+    input wire  [31:0] group0;
+    input wire  [31:0] group1;
+    input wire  [31:0] group2;
+    input wire  [31:0] group3;
+    input wire  [31:0] group4;
+    input wire  [31:0] group5;
+    input wire  [31:0] group6;
+    input wire  [31:0] group7;
+    output reg  [31:0] irq_rdata;
     output reg  [7:0] adr;
     output reg  rd;
     output reg  wr;
@@ -30359,7 +30791,14 @@ module encspeed_ecc_wb$window$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
     reg  read$clock;
     reg  read$reset;
     reg  read$rd;
-    reg  [31:0] read$cells;
+    reg  [31:0] read$group0;
+    reg  [31:0] read$group1;
+    reg  [31:0] read$group2;
+    reg  [31:0] read$group3;
+    reg  [31:0] read$group4;
+    reg  [31:0] read$group5;
+    reg  [31:0] read$group6;
+    reg  [31:0] read$group7;
     wire  [31:0] read$wb_dat_o;
     
     // Sub module instances
@@ -30394,7 +30833,14 @@ module encspeed_ecc_wb$window$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         .clock(read$clock),
         .reset(read$reset),
         .rd(read$rd),
-        .cells(read$cells),
+        .group0(read$group0),
+        .group1(read$group1),
+        .group2(read$group2),
+        .group3(read$group3),
+        .group4(read$group4),
+        .group5(read$group5),
+        .group6(read$group6),
+        .group7(read$group7),
         .wb_dat_o(read$wb_dat_o)
     );
     
@@ -30425,7 +30871,15 @@ module encspeed_ecc_wb$window$file(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_
         irq = irqs$irq;
         read$reset = reset;
         read$rd = front$rd;
-        read$cells = cells | irqs$rdata;
+        read$group0 = group0;
+        read$group1 = group1;
+        read$group2 = group2;
+        read$group3 = group3;
+        read$group4 = group4;
+        read$group5 = group5;
+        read$group6 = group6;
+        read$group7 = group7;
+        irq_rdata = irqs$rdata;
         wb_dat_o = read$wb_dat_o;
     end
     
@@ -30462,6 +30916,9 @@ module encspeed_ecc_wb$window$file$front(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,w
     reg  ack$d;
     wire  ack$q;
     reg  ack$clock;
+    reg  pending$d;
+    wire  pending$q;
+    reg  pending$clock;
     
     // Local signals
     reg  req;
@@ -30473,14 +30930,23 @@ module encspeed_ecc_wb$window$file$front(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,w
         .q(ack$q),
         .clock(ack$clock)
     );
+    encspeed_ecc_wb$window$file$front$pending pending(
+        .d(pending$d),
+        .q(pending$q),
+        .clock(pending$clock)
+    );
     
     // Update code
     always @(*) begin
         ack$clock = clock;
+        pending$clock = clock;
         ack$d = ack$q;
-        req = wb_cyc_i & wb_stb_i & (~ack$q);
-        ack$d = req;
+        pending$d = pending$q;
+        req = wb_cyc_i & wb_stb_i & (~ack$q) & (~pending$q);
+        pending$d = req;
+        ack$d = pending$q;
         if (reset) begin
+            pending$d = 1'b0;
             ack$d = 1'b0;
         end
         l_lanes = z32;
@@ -30524,6 +30990,25 @@ module encspeed_ecc_wb$window$file$front$ack(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$window$file$front$ack
+
+
+module encspeed_ecc_wb$window$file$front$pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$front$pending
 
 
 module encspeed_ecc_wb$window$file$irqs(clock,reset,adr,wr,lanes,ones,events,rdata,irq);
@@ -30638,24 +31123,95 @@ module encspeed_ecc_wb$window$file$irqs$status(d,q,clock);
 endmodule // encspeed_ecc_wb$window$file$irqs$status
 
 
-module encspeed_ecc_wb$window$file$read(clock,reset,rd,cells,wb_dat_o);
+module encspeed_ecc_wb$window$file$read(clock,reset,rd,group0,group1,group2,group3,group4,group5,group6,group7,wb_dat_o);
     
     // Module arguments
     input wire  clock;
     input wire  reset;
     input wire  rd;
-    input wire  [31:0] cells;
+    input wire  [31:0] group0;
+    input wire  [31:0] group1;
+    input wire  [31:0] group2;
+    input wire  [31:0] group3;
+    input wire  [31:0] group4;
+    input wire  [31:0] group5;
+    input wire  [31:0] group6;
+    input wire  [31:0] group7;
     output reg  [31:0] wb_dat_o;
     
     // Constant declarations
     localparam  z32 = 32'h0;
     
     // Stub signals
+    reg  [31:0] part0$d;
+    wire  [31:0] part0$q;
+    reg  part0$clock;
+    reg  [31:0] part1$d;
+    wire  [31:0] part1$q;
+    reg  part1$clock;
+    reg  [31:0] part2$d;
+    wire  [31:0] part2$q;
+    reg  part2$clock;
+    reg  [31:0] part3$d;
+    wire  [31:0] part3$q;
+    reg  part3$clock;
+    reg  [31:0] part4$d;
+    wire  [31:0] part4$q;
+    reg  part4$clock;
+    reg  [31:0] part5$d;
+    wire  [31:0] part5$q;
+    reg  part5$clock;
+    reg  [31:0] part6$d;
+    wire  [31:0] part6$q;
+    reg  part6$clock;
+    reg  [31:0] part7$d;
+    wire  [31:0] part7$q;
+    reg  part7$clock;
     reg  [31:0] dat$d;
     wire  [31:0] dat$q;
     reg  dat$clock;
     
     // Sub module instances
+    encspeed_ecc_wb$window$file$read$part0 part0(
+        .d(part0$d),
+        .q(part0$q),
+        .clock(part0$clock)
+    );
+    encspeed_ecc_wb$window$file$read$part1 part1(
+        .d(part1$d),
+        .q(part1$q),
+        .clock(part1$clock)
+    );
+    encspeed_ecc_wb$window$file$read$part2 part2(
+        .d(part2$d),
+        .q(part2$q),
+        .clock(part2$clock)
+    );
+    encspeed_ecc_wb$window$file$read$part3 part3(
+        .d(part3$d),
+        .q(part3$q),
+        .clock(part3$clock)
+    );
+    encspeed_ecc_wb$window$file$read$part4 part4(
+        .d(part4$d),
+        .q(part4$q),
+        .clock(part4$clock)
+    );
+    encspeed_ecc_wb$window$file$read$part5 part5(
+        .d(part5$d),
+        .q(part5$q),
+        .clock(part5$clock)
+    );
+    encspeed_ecc_wb$window$file$read$part6 part6(
+        .d(part6$d),
+        .q(part6$q),
+        .clock(part6$clock)
+    );
+    encspeed_ecc_wb$window$file$read$part7 part7(
+        .d(part7$d),
+        .q(part7$q),
+        .clock(part7$clock)
+    );
     encspeed_ecc_wb$window$file$read$dat dat(
         .d(dat$d),
         .q(dat$q),
@@ -30664,11 +31220,45 @@ module encspeed_ecc_wb$window$file$read(clock,reset,rd,cells,wb_dat_o);
     
     // Update code
     always @(*) begin
+        part0$clock = clock;
+        part1$clock = clock;
+        part2$clock = clock;
+        part3$clock = clock;
+        part4$clock = clock;
+        part5$clock = clock;
+        part6$clock = clock;
+        part7$clock = clock;
         dat$clock = clock;
+        part0$d = part0$q;
+        part1$d = part1$q;
+        part2$d = part2$q;
+        part3$d = part3$q;
+        part4$d = part4$q;
+        part5$d = part5$q;
+        part6$d = part6$q;
+        part7$d = part7$q;
         dat$d = dat$q;
-        dat$d = z32;
+        part0$d = z32;
+        part1$d = z32;
+        part2$d = z32;
+        part3$d = z32;
+        part4$d = z32;
+        part5$d = z32;
+        part6$d = z32;
+        part7$d = z32;
         if (rd & (~reset)) begin
-            dat$d = cells;
+            part0$d = group0;
+            part1$d = group1;
+            part2$d = group2;
+            part3$d = group3;
+            part4$d = group4;
+            part5$d = group5;
+            part6$d = group6;
+            part7$d = group7;
+        end
+        dat$d = part0$q | part1$q | part2$q | part3$q | part4$q | part5$q | part6$q | part7$q;
+        if (reset) begin
+            dat$d = z32;
         end
         wb_dat_o = dat$q;
     end
@@ -30693,6 +31283,158 @@ module encspeed_ecc_wb$window$file$read$dat(d,q,clock);
     end
           
 endmodule // encspeed_ecc_wb$window$file$read$dat
+
+
+module encspeed_ecc_wb$window$file$read$part0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$read$part0
+
+
+module encspeed_ecc_wb$window$file$read$part1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$read$part1
+
+
+module encspeed_ecc_wb$window$file$read$part2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$read$part2
+
+
+module encspeed_ecc_wb$window$file$read$part3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$read$part3
+
+
+module encspeed_ecc_wb$window$file$read$part4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$read$part4
+
+
+module encspeed_ecc_wb$window$file$read$part5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$read$part5
+
+
+module encspeed_ecc_wb$window$file$read$part6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$read$part6
+
+
+module encspeed_ecc_wb$window$file$read$part7(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$file$read$part7
 
 
 module encspeed_ecc_wb$window$id(adr,rdata);

@@ -19,6 +19,6 @@ encspeed_ecc_wb u_encspeed_ecc_wb (
     .wb_dat_i (wb_dat_i), // input [31:0]: Wishbone: write data
     .wb_sel_i (wb_sel_i), // input [3:0]: Wishbone: byte lanes of a write (lane j = bits 8j+7..8j)
     .wb_dat_o (wb_dat_o), // output [31:0]: Wishbone: read data, valid with wb_ack_o (0 otherwise)
-    .wb_ack_o (wb_ack_o), // output: Wishbone: acknowledge, high the one cycle after the request edge
+    .wb_ack_o (wb_ack_o), // output: Wishbone: acknowledge, high for one cycle from the edge after the request edge
     .irq      (irq     )  // output: interrupt request, level: (IRQ_STATUS & IRQ_ENABLE) != 0, a register output
 );

@@ -188,6 +188,9 @@ fn a_reversal_zeroes_the_speed_until_a_new_measurement() {
     let first = (flip..outs.len()).find(|&k| outs[k].speed_strobe).unwrap();
     for o in &outs[flip + 1..first] {
         assert_eq!(o.speed_n3, 0);
+    }
+    // `valid` is a register of its conditions: low from the edge after.
+    for o in &outs[flip + 2..first] {
         assert!(!o.valid);
     }
     // Every speed after the reversal is negative and no larger in magnitude than the

@@ -357,16 +357,23 @@ impl Master {
             wb_sel_i: sel,
         };
         assert!(
-            !self.model.outputs().wb_ack_o,
-            "an access starts with ack low"
+            !self.model.regs().busy(),
+            "an access starts with the slave idle"
         );
         let sampled = self.model.regs().sampled();
-        self.cycle(false, bus);
+        let executed = self.cycle(false, bus);
+        assert!(
+            !executed.wb_ack_o,
+            "no ack in the cycle after the request edge"
+        );
+        let ack = self.cycle(false, bus);
+        assert!(
+            ack.wb_ack_o,
+            "ack in the cycle after the edge after the request's"
+        );
         let o = self.cycle(false, bus);
         assert!(!o.wb_ack_o, "one ack per access");
         self.t.cov.sampled_reads += usize::from(sampled && !we);
-        let ack = self.t.outs[self.t.outs.len() - 2];
-        assert!(ack.wb_ack_o, "ack in the cycle after the request edge");
         if we {
             self.t.cov.writes += 1;
         } else {

@@ -8,8 +8,10 @@
 //! with the inputs applied during the cycle before it; `step` returns the outputs after the
 //! edge; every output is a register or a function of registers only. Per edge, when
 //! `reset` is low:
-//! - request = `wb_cyc_i & wb_stb_i & !wb_ack_o`; `wb_ack_o` ← request; `wb_dat_o` ← the
-//!   register at `wb_adr_i` (bits 1:0 ignored) if the request reads, else 0 (the top
+//! - request = `wb_cyc_i & wb_stb_i & !wb_ack_o & !pending`; `pending` ← request;
+//!   `wb_ack_o` ← `pending`; `wb_dat_o` in the ack cycle ← the register at `wb_adr_i`
+//!   (bits 1:0 ignored) as it stood before the request's edge if the request reads, else
+//!   0 (the top
 //!   routes only the window's offsets here, but the slave answers any offset it is given:
 //!   0 where nothing is mapped);
 //! - a read of a corrected speed's LO register loads its HI shadow;
@@ -143,6 +145,11 @@ impl EccRegsModel {
         }
     }
 
+    /// The slave takes no request at the next edge (an access in progress).
+    pub fn busy(&self) -> bool {
+        self.file.busy()
+    }
+
     /// The outputs as they stand.
     pub fn outputs(&self) -> EccRegsOutputs {
         let f = &self.file;
@@ -247,11 +254,13 @@ mod tests {
             wb_dat_i: dat,
             wb_sel_i: 0xF,
         };
-        let o = r.step(&EccRegsInputs {
+        let inputs = EccRegsInputs {
             reset: false,
             bus,
             status: *st,
-        });
+        };
+        assert!(!r.step(&inputs).wb_ack_o, "executed, not yet acknowledged");
+        let o = r.step(&inputs);
         assert!(o.wb_ack_o);
         let idle = r.step(&EccRegsInputs {
             reset: false,
@@ -293,14 +302,16 @@ mod tests {
             wb_dat_i: 1,
             wb_sel_i: 1,
         };
-        let o = r.step(&EccRegsInputs {
+        let inputs = EccRegsInputs {
             reset: false,
             bus,
             status: st,
-        });
-        assert!(o.ident_arm && o.wb_ack_o);
-        let o = r.step(&EccRegsInputs::default());
-        assert!(!o.ident_arm);
+        };
+        let o = r.step(&inputs);
+        assert!(o.ident_arm && !o.wb_ack_o);
+        let o = r.step(&inputs);
+        assert!(!o.ident_arm && o.wb_ack_o);
+        r.step(&EccRegsInputs::default());
         assert_eq!(
             access(&mut r, &st, false, m::ECC_CTRL, 0),
             0,

@@ -8,8 +8,11 @@
 //! Conventions as in [`crate::estimator::sync_estimator`]: one [`RegFileModel::step`] per
 //! rising clock edge with the inputs applied during the cycle before it; registers are
 //! updated from the values before the edge. Per edge, when `reset` is low:
-//! - request = `wb_cyc_i & wb_stb_i & !wb_ack_o` ([`Request::decode`]); `wb_ack_o` ←
-//!   request; `wb_dat_o` ← the word at the request's offset if it reads, else 0;
+//! - request = `wb_cyc_i & wb_stb_i & !wb_ack_o & !pending` ([`Request::decode`]);
+//!   `pending` ← request, `wb_ack_o` ← `pending`: the ack is high in the cycle after the
+//!   edge after the request's; the read data takes the same two edges: the word at the
+//!   request's offset if it reads, else 0, is taken at the request's edge and shows on
+//!   `wb_dat_o` with the ack (the hardware's two read stages, `hdl::bus::read_data`);
 //! - the word at an offset is, by kind: the interrupt enable or status; a shadow pair's LO
 //!   (bits 31:0 of the value sign-extended to 64 bits, live) or HI (the shadow); a
 //!   register with RW fields, its stored fields; a register the file holds with only RO
@@ -67,12 +70,13 @@ pub struct Request {
 }
 
 impl Request {
-    /// The access of `b` for a slave whose `wb_ack_o` is `ack`. Panics if the address does
-    /// not fit `wb_adr_i` or `wb_sel_i` is wider than 4 bits.
-    pub fn decode(b: &WbBus, ack: bool) -> Request {
+    /// The access of `b` for a slave that is `busy` (its `wb_ack_o` or its pending flag
+    /// high). Panics if the address does not fit `wb_adr_i` or `wb_sel_i` is wider than 4
+    /// bits.
+    pub fn decode(b: &WbBus, busy: bool) -> Request {
         assert!(b.wb_adr_i < SPAN_BYTES, "wb_adr_i = {:#x}", b.wb_adr_i);
         assert!(b.wb_sel_i < 16, "wb_sel_i = {:#x}", b.wb_sel_i);
-        let req = b.wb_cyc_i && b.wb_stb_i && !ack;
+        let req = b.wb_cyc_i && b.wb_stb_i && !busy;
         let lanes = lane_mask(b.wb_sel_i);
         Request {
             off: b.wb_adr_i & !3,
@@ -113,6 +117,10 @@ pub struct Cycle<'a> {
 
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 struct State {
+    /// A request was executed at the last edge.
+    pending: bool,
+    /// The word it read (0 for a write).
+    pending_dat: u32,
     ack: bool,
     dat: u32,
     irq_enable: u32,
@@ -194,6 +202,12 @@ impl RegFileModel {
         self.s.ack
     }
 
+    /// The slave takes no request at the next edge: `wb_ack_o` is high or a request was
+    /// taken at the last edge (its ack comes at the next).
+    pub fn busy(&self) -> bool {
+        self.s.ack || self.s.pending
+    }
+
     /// `wb_dat_o`.
     pub fn dat(&self) -> u32 {
         self.s.dat
@@ -249,10 +263,11 @@ impl RegFileModel {
             self.shadows.len(),
             "one value per shadow pair"
         );
-        let req = Request::decode(c.bus, self.s.ack);
+        let req = Request::decode(c.bus, self.s.ack || self.s.pending);
         if c.reset {
             let s = &mut self.s;
-            (s.ack, s.dat, s.irq_enable, s.irq_status) = (false, 0, 0, 0);
+            (s.pending, s.pending_dat, s.ack, s.dat) = (false, 0, false, 0);
+            (s.irq_enable, s.irq_status) = (0, 0);
             s.rw.fill(0);
             s.hi.fill(0);
             s.pulses.fill(false);
@@ -268,7 +283,8 @@ impl RegFileModel {
         // Everything below reads only the registers it replaces, or reads before writing.
         let dat = if rd { self.read(off, c.wide, live) } else { 0 };
         let s = &mut self.s;
-        (s.ack, s.dat) = (rd || wr, dat);
+        (s.ack, s.dat) = (s.pending, s.pending_dat);
+        (s.pending, s.pending_dat) = (rd || wr, dat);
         if rd {
             if let Some(k) = self.shadows.iter().position(|p| p.0 == off) {
                 s.hi[k] = (c.wide[k] >> 32) as u32;
@@ -352,19 +368,23 @@ mod tests {
         }
     }
 
-    /// One access and its idle cycle; the data of the ack cycle.
+    /// One access as a classic master makes it (the request held until the ack, which
+    /// comes after the second edge), then one idle cycle; the data of the ack cycle.
     fn access(f: &mut RegFileModel, b: WbBus, wide: u64, events: u32) -> u32 {
         let live = |off: u32| if off == 0x08 { 0xCAFE } else { 0 };
         let w = [wide];
-        f.step(
-            &Cycle {
-                reset: false,
-                bus: &b,
-                wide: &w,
-                events,
-            },
-            &live,
-        );
+        for (edge, events) in [events, 0].into_iter().enumerate() {
+            assert!(!f.ack(), "no ack before edge {edge} of the access");
+            f.step(
+                &Cycle {
+                    reset: false,
+                    bus: &b,
+                    wide: &w,
+                    events,
+                },
+                &live,
+            );
+        }
         assert!(f.ack());
         let d = f.dat();
         let idle = WbBus::default();
@@ -396,30 +416,26 @@ mod tests {
         let v = 0xFFFF_FFFE_0000_0003u64;
         assert_eq!(access(&mut f, bus(false, 0x18, 0, 0), v, 0), 3);
         assert_eq!(access(&mut f, bus(false, 0x1C, 0, 0), 7, 0), 0xFFFF_FFFE);
-        // Pulse: one cycle after a write of 1 to GO.
+        // Pulse: one cycle after a write of 1 to GO; the ack one cycle later.
         let live = |_: u32| 0;
-        let b = bus(true, 0x0C, 1, 0b0001);
-        f.step(
-            &Cycle {
+        let (go, idle) = (bus(true, 0x0C, 1, 0b0001), WbBus::default());
+        let edge = |f: &mut RegFileModel, b: &WbBus| {
+            let cycle = Cycle {
                 reset: false,
-                bus: &b,
+                bus: b,
                 wide: &[0],
                 events: 0,
-            },
-            &live,
+            };
+            f.step(&cycle, &live);
+            (f.pulse(0), f.ack())
+        };
+        assert_eq!(edge(&mut f, &go), (true, false));
+        assert_eq!(
+            edge(&mut f, &idle),
+            (false, true),
+            "the write's ack, after the pulse"
         );
-        assert!(f.pulse(0));
-        let idle = WbBus::default();
-        f.step(
-            &Cycle {
-                reset: false,
-                bus: &idle,
-                wide: &[0],
-                events: 0,
-            },
-            &live,
-        );
-        assert!(!f.pulse(0));
+        assert_eq!(edge(&mut f, &idle), (false, false));
         // Interrupts: event, enable, W1C; an event wins over a clear at the same edge.
         access(&mut f, bus(true, 0x10, 0b10, 0b0001), 0, 0b10);
         assert!(f.irq());

@@ -9,11 +9,15 @@
 //! Wishbone B4 classic slave, 32-bit data, [`ADDR_BITS`]-bit byte address (`wb_adr_i`,
 //! a [`SPAN_BYTES`]-byte window; bits 1:0 are ignored, registers are 32-bit words at
 //! word-aligned offsets; the interconnect decodes the address bits above). A request
-//! (`wb_cyc_i & wb_stb_i`, while `wb_ack_o` is low) sampled at clock edge k is executed at
-//! that edge and acknowledged by `wb_ack_o` high for the one cycle after it, with the read
-//! data in `wb_dat_o` (0 in every other cycle). So every access takes two cycles, and
-//! `wb_ack_o` is low for at least one cycle between back-to-back accesses of a master that
-//! keeps `wb_stb_i` high. There is no `wb_err_o`: a read of an unmapped offset returns 0 and
+//! (`wb_cyc_i & wb_stb_i`, while the slave is idle: `wb_ack_o` low and no request taken at
+//! the edge before) sampled at clock edge k is executed at that edge and acknowledged by
+//! `wb_ack_o` high for the one cycle after edge k + 1, with the read data (the register as
+//! it stood before edge k) in `wb_dat_o` (0 in every other cycle). So every access takes
+//! three cycles, and `wb_ack_o` is low for at least two cycles between back-to-back
+//! accesses of a master that keeps `wb_stb_i` high. The second edge is the read
+//! multiplexer's pipeline stage: the file meets a 100 MHz clock on an iCE40HX8K with it.
+//! A master must wait for `wb_ack_o` (as every classic master does), and the address, data
+//! and `wb_we_i` it holds through the access are sampled at edge k only. There is no `wb_err_o`: a read of an unmapped offset returns 0 and
 //! a write to it, or to a read-only register or bit, is acknowledged and ignored. Writes
 //! honour `wb_sel_i` (byte lane j = bits 8j+7..8j): a lane that is not selected is neither
 //! written nor, for W1C bits, cleared. Register bits above a field's width are reserved:
@@ -32,7 +36,7 @@
 //!
 //! `STATUS` shows the core's status levels live. Its three sticky fault bits are W1C: a
 //! write with byte lane 0 selected and a 1 in any of them pulses `clear_faults` for the one
-//! cycle after the write edge (the cycle of `wb_ack_o`), and the core's single
+//! cycle after the write edge (the cycle before `wb_ack_o`), and the core's single
 //! `clear_faults` input clears **all three** flags at the next edge. So a write of 1 to any
 //! fault bit clears all of them, and a read of `STATUS` in the next access already sees
 //! them cleared (unless a new fault came).
@@ -50,7 +54,7 @@
 //! outputs them in that cycle (the values a read requested at that edge would return), and
 //! counts it in `SNAP_COUNT` (modulo 2^32) and raises the `SAMPLE` interrupt event. A
 //! write of 1 to `CTRL.TRIGGER` takes one the same way at the edge after the write edge
-//! (the ack cycle's edge), whatever `sample` and `CTRL.HOLD`; `CTRL.HOLD` = 1 makes the
+//! (the edge that raises `wb_ack_o`), whatever `sample` and `CTRL.HOLD`; `CTRL.HOLD` = 1 makes the
 //! file ignore `sample`. With `CTRL.SAMPLED` = 1, `POSITION`, `NEP`, `NDT`, the `SPEED_*`
 //! pairs and `STATUS`'s `VALID`, `STALLED`, `DIRECTION` read the snapshot instead of the live
 //! values (everything else stays live; a speed's LO read still latches its HI from the

@@ -8,8 +8,11 @@
 //! with the inputs applied during the cycle before it; every register is updated from the
 //! values before the edge; `step` returns the outputs after the edge. Every output is a
 //! register or a function of registers only. Per edge, when `reset` is low:
-//! - request = `wb_cyc_i & wb_stb_i & !wb_ack_o`; `wb_ack_o` ← request;
-//!   `wb_dat_o` ← the register at `wb_adr_i` (bits 1:0 ignored) if the request reads, else 0;
+//! - request = `wb_cyc_i & wb_stb_i & !wb_ack_o & !pending`; `pending` ← request;
+//!   `wb_ack_o` ← `pending` (the ack is high in the cycle after the edge after the
+//!   request's); the register at `wb_adr_i` (bits 1:0 ignored) as it stands before the
+//!   request's edge if the request reads, else 0, is `wb_dat_o` in the ack cycle (0 in
+//!   every other);
 //! - a read of a speed's LO register loads that speed's HI shadow with bits 63:32 of the
 //!   speed sign-extended from S to 64 bits;
 //! - a write stores `(old & !lanes) | (wb_dat_i & lanes)` in the RW bits of the register
@@ -222,6 +225,11 @@ impl WbRegsModel {
         self.file.rw(regmap::CTRL) >> CTRL_SAMPLED_LSB & 1 != 0
     }
 
+    /// The file takes no request at the next edge (an access in progress).
+    pub fn busy(&self) -> bool {
+        self.file.busy()
+    }
+
     /// The outputs as they stand.
     pub fn outputs(&self) -> WbRegsOutputs {
         let f = &self.file;
@@ -351,7 +359,8 @@ mod tests {
     }
 
     /// A classic master: hold the request until `wb_ack_o`, then one idle cycle. Returns the
-    /// data and the outputs of the ack cycle.
+    /// data of the ack cycle and the outputs of the cycle after the request edge (where a
+    /// write's effects first show).
     fn access(
         m: &mut WbRegsModel,
         st: &CoreStatus,
@@ -360,27 +369,35 @@ mod tests {
         dat: u32,
         sel: u8,
     ) -> (u32, WbRegsOutputs) {
-        let bus = WbBus {
-            wb_cyc_i: true,
-            wb_stb_i: true,
-            wb_we_i: we,
-            wb_adr_i: adr,
-            wb_dat_i: dat,
-            wb_sel_i: sel,
-        };
-        let o = m.step(&WbRegsInputs {
+        let inputs = WbRegsInputs {
             reset: false,
             sample: false,
-            bus,
+            bus: WbBus {
+                wb_cyc_i: true,
+                wb_stb_i: true,
+                wb_we_i: we,
+                wb_adr_i: adr,
+                wb_dat_i: dat,
+                wb_sel_i: sel,
+            },
             status: *st,
-        });
-        assert!(o.wb_ack_o, "ack in the cycle after the request");
+        };
+        let executed = m.step(&inputs);
+        assert!(
+            !executed.wb_ack_o,
+            "no ack in the cycle after the request edge"
+        );
+        let acked = m.step(&inputs);
+        assert!(
+            acked.wb_ack_o,
+            "ack in the cycle after the edge after the request's"
+        );
         let idle = m.step(&WbRegsInputs {
             status: *st,
             ..Default::default()
         });
         assert!(!idle.wb_ack_o && idle.wb_dat_o == 0);
-        (o.wb_dat_o, o)
+        (acked.wb_dat_o, executed)
     }
 
     fn read(m: &mut WbRegsModel, st: &CoreStatus, adr: u32) -> u32 {
@@ -392,7 +409,7 @@ mod tests {
     }
 
     #[test]
-    fn a_held_request_is_acked_every_other_cycle() {
+    fn a_held_request_is_acked_every_third_cycle() {
         let mut m = model();
         let inp = WbRegsInputs {
             bus: WbBus {
@@ -403,10 +420,10 @@ mod tests {
             },
             ..Default::default()
         };
-        for k in 0..6 {
+        for k in 0..9 {
             let o = m.step(&inp);
-            assert_eq!(o.wb_ack_o, k % 2 == 0, "edge {k}");
-            assert_eq!(o.wb_dat_o, if k % 2 == 0 { ID_MAGIC } else { 0 });
+            assert_eq!(o.wb_ack_o, k % 3 == 1, "edge {k}");
+            assert_eq!(o.wb_dat_o, if k % 3 == 1 { ID_MAGIC } else { 0 });
         }
         // No cyc: no request.
         let o = m.step(&WbRegsInputs {
@@ -575,7 +592,7 @@ mod tests {
         };
         assert_eq!(read(&mut m, &st, STATUS), 0x21);
         let o = write(&mut m, &st, STATUS, 0x10, 0x1);
-        assert!(o.clear_faults, "in the ack cycle");
+        assert!(o.clear_faults, "in the cycle after the request edge");
         assert!(!m.outputs().clear_faults, "one cycle");
         for (dat, sel) in [(0x0F, 0x1), (0x70, 0xE), (0xFFFF_FF8F, 0xF)] {
             let o = write(&mut m, &st, STATUS, dat, sel);

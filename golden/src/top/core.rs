@@ -47,8 +47,8 @@
 //!   once, at the core's edge, and the blocks read the registers (the glitch filters
 //!   compare `cfg_filter` into a register an edge ahead, the same delay): a change of
 //!   `cfg_filter` or `cfg_z_mode` acts from the edge after the one that samples it;
-//!   `stalled` and `valid` compare with a new `cfg_timeout` from the edge that samples
-//!   it. The effective dt is registered (`dt_active`, one edge later) and the time bases
+//!   `stalled` and `valid` show a new `cfg_timeout` from the edge after the one that
+//!   samples it (they are registered, below). The effective dt is registered (`dt_active`, one edge later) and the time bases
 //!   compare with that register an edge ahead, so a `cfg_dt` change moves the dt windows
 //!   from two edges after it is sampled. A change of `cfg_mode` is registered with
 //!   the mode ([`ModeReset`]): the edge after the one that sees it resets the whole core
@@ -69,7 +69,10 @@
 //!   saturating.
 //! - **valid** = a speed has been computed since reset or the last reversal, the shaft has
 //!   moved within the timeout (`stalled` low) and the configuration is legal. Sticky faults
-//!   do not clear it; they are reported beside it.
+//!   do not clear it; they are reported beside it. `valid` and `stalled` are registers: each
+//!   edge loads them with their conditions as the core's registers stood before it (0 at a
+//!   reset edge), so the timeout's carry chain ends in a flip-flop and not in the logic
+//!   that reads them (the register file's snapshot and status word).
 //! - **Estimators left out** (`estimators`, [`SpeedOutput`]): a speed output that is not
 //!   built reads 0 at every cycle (`speed_n1`, `speed_n2`, `speed_pc`, `speed_et`,
 //!   `speed_mt`; without M/T also `mt_strobe`, `mt_m`, `mt_t`, `mt_negative`), and
@@ -246,6 +249,10 @@ pub struct CoreModel {
     restart_pos: u64,
     restart_seen: bool,
     cfg_error: bool,
+    /// The `stalled` and `valid` outputs: registered from their conditions before the edge
+    /// (0 at a reset edge), so that the timeout comparison ends in a flip-flop.
+    stalled_out: bool,
+    valid_out: bool,
     faults: [bool; 3],
     glitch_count: u64,
     pc: PcCounter,
@@ -293,6 +300,8 @@ impl CoreModel {
             restart_pos: 0,
             restart_seen: false,
             cfg_error: false,
+            stalled_out: false,
+            valid_out: false,
             faults: [false; 3],
             glitch_count: 0,
             pc: PcCounter::new(p.counter_bits()),
@@ -350,6 +359,7 @@ impl CoreModel {
         assert!(inp.cfg_mode <= MODE_INVALID, "cfg_mode = {}", inp.cfg_mode);
         // The configuration registers before the edge (module docs: Configuration).
         let rst = self.mode_reset.rst();
+        let (stalled_now, valid_now) = self.stalled_and_valid();
         let mode = self.mode_reset.mode();
         let shift = mode_shift(mode);
         let (cfg_filter, cfg_z_mode) = (self.filter_reg, self.z_mode_reg);
@@ -493,6 +503,7 @@ impl CoreModel {
             self.have_dir = true;
             self.last_dir = dec.forward;
         }
+        (self.stalled_out, self.valid_out) = (stalled_now && !rst, valid_now && !rst);
         self.cfg_error = inp.cfg_dt == 1 || inp.cfg_mode == MODE_INVALID;
         self.dt_window = self.dt_reg;
         self.dt_reg = self.dt_eff(inp.cfg_dt);
@@ -521,12 +532,19 @@ impl CoreModel {
         self.outputs()
     }
 
+    /// The conditions of `stalled` (Cdt has reached the timeout) and `valid` (a speed since
+    /// reset or the last reversal, not stalled, legal configuration) as the registers stand.
+    fn stalled_and_valid(&self) -> (bool, bool) {
+        let stalled = self.engine.state().cdt >= self.timeout_reg;
+        let valid = self.calc.outputs().have_speeds && !stalled && !self.cfg_error;
+        (stalled, valid)
+    }
+
     /// The outputs as they stand.
     pub fn outputs(&self) -> CoreOutputs {
         let t1 = self.engine.outputs();
         let dec = self.decoder.state();
         let pos = self.position.outputs();
-        let stalled = self.engine.state().cdt >= self.timeout_reg;
         let calc = self.calc.outputs();
         CoreOutputs {
             position: pos.position,
@@ -545,8 +563,8 @@ impl CoreModel {
             speed_mt: self.built(SpeedOutput::Mt, self.baseline.outputs().speeds.mt),
             // No converter without a baseline.
             baseline_strobe: self.baseline.outputs().valid && self.estimators.has_baselines(),
-            valid: calc.have_speeds && !stalled && !self.cfg_error,
-            stalled,
+            valid: self.valid_out,
+            stalled: self.stalled_out,
             fault_illegal: self.faults[0],
             fault_overspeed: self.faults[1],
             fault_revolution: self.faults[2],

@@ -146,12 +146,17 @@ mod tests {
             wb_dat_i: dat,
             wb_sel_i: 0xF,
         };
-        let o = t.step(&WbTopInputs {
+        let inputs = WbTopInputs {
             bus,
             ..Default::default()
-        });
+        };
+        assert!(
+            !t.step(&inputs).wb_ack_o,
+            "no ack at the request edge at {adr:#x}"
+        );
+        let o = t.step(&inputs);
         assert!(o.wb_ack_o, "one ack per access at {adr:#x}");
-        t.step(&WbTopInputs::default());
+        assert!(!t.step(&WbTopInputs::default()).wb_ack_o);
         o.wb_dat_o
     }
 

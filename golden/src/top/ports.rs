@@ -107,7 +107,7 @@ pub fn core_ports(counter_bits: u32) -> Vec<Port> {
     v.extend(encoder_inputs());
     v.extend([
         i("cfg_dt", n, "dt in clock cycles (Rairan's time base and the PC/M/T window); 0 = the generation default dt_cycles, 1 = used as 2 and flags cfg_error; registered: dt_active shows a change one edge later, the dt windows use it from the edge after that"),
-        i("cfg_timeout", n, "zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid compare with it from the edge that samples it"),
+        i("cfg_timeout", n, "zero-speed timeout in dt intervals; 0 = the generation default; registered: stalled and valid, themselves registered, show a new timeout from the edge after the one that samples it"),
         i("cfg_filter", FILTER_BITS, "glitch filter length in clock cycles on A, B and Z (a level must be seen this many cycles to pass); 0 = off; registered (acts one edge later)"),
         i("cfg_mode", 2, "decoding: 0 = x1 (A edge while B low), 1 = x2 (A edges), 2 = x4 (A and B edges); 3 = x4 and cfg_error. Registered: a change resets the whole core (as reset) at the edge after the one that samples it, with the new mode in place"),
         i("cfg_z_mode", 2, "index: 0 = ignore, 1 = a Z edge resets the position, 2 = latches it into z_latch, 3 = latch then reset; registered (acts one edge later)"),
@@ -127,8 +127,8 @@ pub fn core_ports(counter_bits: u32) -> Vec<Port> {
         o("speed_et", s, "fixed-space (elapsed time) speed dt/period of the last period at the window end; 0 before a period of the current direction; format as speed_n1"),
         o("speed_mt", s, "M/T speed: steps of the window over the exact clock count spanning them, times dt; 0 for a window without steps; format as speed_n1"),
         o("baseline_strobe", 1, "one cycle: speed_pc, speed_et, speed_mt have just been written"),
-        o("valid", 1, "speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration"),
-        o("stalled", 1, "no step for the zero-speed timeout: the speed is below one step per timeout"),
+        o("valid", 1, "speed_n3 is a measurement of the current direction (one since reset or the last reversal), not stalled, legal configuration; a register, one edge after those conditions"),
+        o("stalled", 1, "no step for the zero-speed timeout: the speed is below one step per timeout; a register, one edge after Cdt reaches the timeout"),
         o("fault_illegal", 1, "sticky: A and B changed between two samples (an illegal transition)"),
         o("fault_overspeed", 1, "sticky: the A or B filter rejected a level shorter than cfg_filter cycles (a glitch, or edges closer than the filter can pass)"),
         o("fault_revolution", 1, "sticky: a revolution of one direction between two index edges had a count other than lines*2^s"),
@@ -200,8 +200,9 @@ pub struct Latency {
     pub reset_to_effect: u32,
     /// From the edge that samples a new `cfg_filter`, `cfg_z_mode` or `cfg_mode` to the
     /// edge at which it acts (a new `cfg_mode`: the reset of the core): the core registers
-    /// its configuration inputs once, 1. (`stalled` compares with the registered
-    /// `cfg_timeout`, so a new timeout shows after the edge that samples it.)
+    /// its configuration inputs once, 1. (`stalled` and `valid` are registered comparisons
+    /// with the registered `cfg_timeout`, so a new timeout acts in them at the edge after
+    /// the one that samples it, 1 as well.)
     pub config_to_effect: u32,
     /// From the edge that samples a new `cfg_dt` to the first edge whose dt window uses it
     /// (Rairán's time base, PC and M/T): the dt register (`dt_active`), then the time bases'

@@ -17,8 +17,8 @@
 //! the other's outputs as they stood **before** the edge: the core steps with the register
 //! file's configuration outputs before the edge, the register file steps with the core's
 //! status outputs before the edge. Hence a bus write to a configuration register reaches
-//! the core one edge after the write edge (the ack cycle's edge), and a read returns the
-//! core's outputs as they stood in the cycle of the request.
+//! the core one edge after the write edge (the edge that raises `wb_ack_o`), and a read
+//! returns the core's outputs as they stood in the cycle of the request.
 //!
 //! The reset is shared: `reset` resets the register file at the edge that samples it and
 //! the core at the edge after (the core registers its reset: docs/ports.md).
@@ -69,7 +69,7 @@ port_struct! {
     pub struct WbTopOutputs {
         /// Wishbone read data (0 unless `wb_ack_o` of a read).
         pub wb_dat_o: u32,
-        /// Wishbone acknowledge (one cycle per access).
+        /// Wishbone acknowledge (one cycle per access, after the edge after the request's).
         pub wb_ack_o: bool,
         /// Interrupt request, level.
         pub irq: bool,
@@ -224,7 +224,7 @@ pub fn wb_top_ports() -> Vec<Port> {
         o(
             "wb_ack_o",
             1,
-            "Wishbone: acknowledge, high the one cycle after the request edge",
+            "Wishbone: acknowledge, high for one cycle from the edge after the request edge",
         ),
         o(
             "irq",
@@ -253,7 +253,8 @@ mod tests {
         .unwrap()
     }
 
-    /// One classic access (request held through the ack cycle); the ack cycle's outputs.
+    /// One classic access (the request held until the ack, which comes after the second
+    /// edge); the ack cycle's outputs.
     fn access(m: &mut WbTopModel, we: bool, adr: u32, dat: u32) -> WbTopOutputs {
         let bus = WbBus {
             wb_cyc_i: true,
@@ -263,10 +264,12 @@ mod tests {
             wb_dat_i: dat,
             wb_sel_i: 0xF,
         };
-        let o = m.step(&WbTopInputs {
+        let inputs = WbTopInputs {
             bus,
             ..Default::default()
-        });
+        };
+        assert!(!m.step(&inputs).wb_ack_o, "executed, not yet acknowledged");
+        let o = m.step(&inputs);
         assert!(o.wb_ack_o);
         let idle = m.step(&WbTopInputs::default());
         assert!(!idle.wb_ack_o);
@@ -294,14 +297,16 @@ mod tests {
             wb_dat_i: 1,
             wb_sel_i: 0xF,
         };
-        m.step(&WbTopInputs {
+        let inputs = WbTopInputs {
             bus,
             ..Default::default()
-        });
+        };
+        m.step(&inputs);
         assert_eq!(m.regs_outputs().cfg_dt, 1);
         assert!(!m.core_outputs().cfg_error);
-        m.step(&WbTopInputs::default());
+        assert!(m.step(&inputs).wb_ack_o);
         assert!(m.core_outputs().cfg_error);
+        m.step(&WbTopInputs::default());
         // A STATUS read in the next access sees it.
         let st = access(&mut m, false, regmap::STATUS, 0).wb_dat_o;
         assert_ne!(st & m.regs().map().mask("STATUS", "CFG_ERROR"), 0);

@@ -28,7 +28,8 @@
 //!
 //! Timing: the bridge's Wishbone master drives `encspeed_wb`'s slave directly (both are
 //! registered on both sides), so a command's access reaches the registers at the
-//! bridge's latency (docs/uart-bridge.md) and is acknowledged in the cycle after.
+//! bridge's latency (docs/uart-bridge.md) and is acknowledged in the cycle after the next
+//! edge.
 
 use crate::board::uart_wishbone::UartWishbone;
 use crate::top::wb_top::EncspeedWb;

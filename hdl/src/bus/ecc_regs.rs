@@ -18,7 +18,7 @@
 //! | `wb_adr_i` | in | 8 | byte address; bits 1:0 ignored |
 //! | `wb_dat_i`, `wb_sel_i` | in | 32, 4 | write data, byte lanes |
 //! | `wb_dat_o` | out | 32 | read data, valid with `wb_ack_o` (0 otherwise) |
-//! | `wb_ack_o` | out | 1 | one cycle after the request edge |
+//! | `wb_ack_o` | out | 1 | high for one cycle from the edge after the request edge |
 //! | `irq` | out | 1 | (`ECC_IRQ_STATUS` & `ECC_IRQ_ENABLE`) ≠ 0 |
 //! | `ecc_c`, `ecc_d` | out | 32 | the coefficients last loaded by `ECC_CTRL.LOAD` |
 //! | `ident_arm` | out | 1 | the cycle after a write of 1 to `ECC_CTRL.IDENT_ARM` |
@@ -333,28 +333,24 @@ impl<const S: usize> Logic for EccRegs<S> {
         self.c2.adr.next = self.file.adr.val();
         self.c2.value.next = self.ident_sum_cos.val().get_bits::<8>(64);
 
-        // Read data: the cells' words (each 0 away from its offset; ECC_CTRL reads 0).
-        self.file.cells.next = self.id.rdata.val()
-            | self.version.rdata.val()
-            | self.status.rdata.val()
-            | self.stage_c.rdata.val()
-            | self.stage_d.rdata.val()
-            | self.mtc.rdata.val()
-            | self.n3c.rdata.val()
-            | self.count.rdata.val()
+        // Read data: the cells' words (each 0 away from its offset; ECC_CTRL reads 0),
+        // grouped by 16-byte block of the map (a group's words share the offset's bits 7:4).
+        self.file.group0.next =
+            self.id.rdata.val() | self.version.rdata.val() | self.status.rdata.val();
+        self.file.group1.next =
+            self.stage_c.rdata.val() | self.stage_d.rdata.val() | self.file.irq_rdata.val();
+        self.file.group2.next = self.mtc.rdata.val() | self.n3c.rdata.val();
+        self.file.group3.next = self.count.rdata.val()
             | self.t_min.rdata.val()
             | self.t_max.rdata.val()
             | self.p_min.rdata.val()
-            | self.p_max.rdata.val()
-            | self.t0.rdata.val()
-            | self.t1.rdata.val()
-            | self.t2.rdata.val()
-            | self.s0.rdata.val()
-            | self.s1.rdata.val()
-            | self.s2.rdata.val()
-            | self.c0.rdata.val()
-            | self.c1.rdata.val()
-            | self.c2.rdata.val();
+            | self.p_max.rdata.val();
+        self.file.group4.next =
+            self.t0.rdata.val() | self.t1.rdata.val() | self.t2.rdata.val() | self.s0.rdata.val();
+        self.file.group5.next =
+            self.s1.rdata.val() | self.s2.rdata.val() | self.c0.rdata.val() | self.c1.rdata.val();
+        self.file.group6.next = self.c2.rdata.val();
+        self.file.group7.next = self.z32.val();
 
         // Interrupt events: the strobes and ident_done rising.
         self.events.next = self.z32.val();

@@ -3,16 +3,19 @@
 //! ([`WbFront`]: request decoder, acknowledge), the interrupt pair ([`IrqCell`]) and the
 //! registered read data ([`ReadData`]), wired together. A window adds one cell per
 //! register of its map, each decoding its own offset from `adr` and driving its word on
-//! its `rdata`, and gives the OR of those words to `cells` and its interrupt events to
-//! `events` ([`crate::bus::wb_regs::WbRegs`], [`crate::bus::ecc_regs::EccRegs`]). Cycle
+//! its `rdata`, gives the OR of those words, in groups of a few (with the interrupt
+//! pair's word `irq_rdata` in the group of its offsets), to `group0` … `group7` and its
+//! interrupt events to `events` ([`crate::bus::wb_regs::WbRegs`], [`crate::bus::ecc_regs::EccRegs`]). Cycle
 //! model of a whole file: [`golden::bus::reg_file::RegFileModel`].
 //!
 //! Ports: `clock`, `reset` (synchronous); the Wishbone slave ports `wb_*`; `irq` (level,
 //! an AND-OR of registers); `events` (32, this cycle's interrupt events in the status
-//! register's bit positions); `cells` (32, the OR of the window's cells' words); to the
-//! cells, combinational from the bus inputs and `wb_ack_o`: `adr`, `rd`, `wr`, `lanes`,
-//! `ones` ([`WbFront`]). Timing: a request sampled at edge k executes at k and is
-//! acknowledged, with its read data, in the cycle after.
+//! register's bit positions); `group0` … `group7` (32 each, the OR of the words of each of
+//! the window's read groups); `irq_rdata` (32, the interrupt pair's word, combinational
+//! from `adr`); to the cells, combinational from the bus inputs and the
+//! front end's registers: `adr`, `rd`, `wr`, `lanes`, `ones` ([`WbFront`]). Timing: a
+//! request sampled at edge k executes at k and is acknowledged, with its read data (the
+//! word as it stood before edge k), in the cycle after edge k + 1.
 //!
 //! Only plain assignments connect the three blocks here, so Verilator orders them one by
 //! one: the decoder drives `adr` before the cells' words come back into the read data,
@@ -51,8 +54,25 @@ pub struct RegFile {
     pub irq: Signal<Out, Bit>,
     /// Interrupt events of this cycle.
     pub events: Signal<In, Bits<32>>,
-    /// The OR of the window's cells' words.
-    pub cells: Signal<In, Bits<32>>,
+    /// The OR of the words of the window's read group 0.
+    pub group0: Signal<In, Bits<32>>,
+    /// The OR of the words of the window's read group 1.
+    pub group1: Signal<In, Bits<32>>,
+    /// The OR of the words of the window's read group 2.
+    pub group2: Signal<In, Bits<32>>,
+    /// The OR of the words of the window's read group 3.
+    pub group3: Signal<In, Bits<32>>,
+    /// The OR of the words of the window's read group 4.
+    pub group4: Signal<In, Bits<32>>,
+    /// The OR of the words of the window's read group 5.
+    pub group5: Signal<In, Bits<32>>,
+    /// The OR of the words of the window's read group 6.
+    pub group6: Signal<In, Bits<32>>,
+    /// The OR of the words of the window's read group 7.
+    pub group7: Signal<In, Bits<32>>,
+    /// The interrupt pair's word at `adr` (0 away from its two offsets), for the window to
+    /// put in a read group.
+    pub irq_rdata: Signal<Out, Bits<32>>,
     /// Byte offset of the addressed word, to the cells.
     pub adr: Signal<Out, Bits<ADDR_BITS>>,
     /// A read request this cycle, to the cells.
@@ -85,7 +105,15 @@ impl RegFile {
             wb_ack_o: Default::default(),
             irq: Default::default(),
             events: Default::default(),
-            cells: Default::default(),
+            group0: Default::default(),
+            group1: Default::default(),
+            group2: Default::default(),
+            group3: Default::default(),
+            group4: Default::default(),
+            group5: Default::default(),
+            group6: Default::default(),
+            group7: Default::default(),
+            irq_rdata: Default::default(),
             adr: Default::default(),
             rd: Default::default(),
             wr: Default::default(),
@@ -124,7 +152,15 @@ impl Logic for RegFile {
         self.irq.next = self.irqs.irq.val();
         self.read.reset.next = self.reset.val();
         self.read.rd.next = self.front.rd.val();
-        self.read.cells.next = self.cells.val() | self.irqs.rdata.val();
+        self.read.group0.next = self.group0.val();
+        self.read.group1.next = self.group1.val();
+        self.read.group2.next = self.group2.val();
+        self.read.group3.next = self.group3.val();
+        self.read.group4.next = self.group4.val();
+        self.read.group5.next = self.group5.val();
+        self.read.group6.next = self.group6.val();
+        self.read.group7.next = self.group7.val();
+        self.irq_rdata.next = self.irqs.rdata.val();
         self.wb_dat_o.next = self.read.wb_dat_o.val();
     }
 }

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 //! Wishbone B4 classic front end of a register file: decodes the request and acknowledges
-//! it. A request is `wb_cyc_i & wb_stb_i` while `wb_ack_o` is low; it is executed at the
-//! edge that samples it and acknowledged in the cycle after: two cycles per access.
+//! it. A request is `wb_cyc_i & wb_stb_i` while neither `wb_ack_o` nor the request's own
+//! `pending` flag is high; it is executed at the edge that samples it (edge k), the read
+//! data is gathered at edge k + 1 ([`crate::bus::read_data`]) and `wb_ack_o` is high in the
+//! cycle after edge k + 1: three cycles per access. The second edge is there for timing:
+//! the 32-bit read multiplexer of some 30 words does not fit one 10 ns cycle on an iCE40
+//! behind the address decode, so it is split over two registers.
 //!
 //! A register file is this front end, one cell per register of its map, each decoding its
 //! own offset from `adr` and driving its word on `rdata` (0 elsewhere)
@@ -15,7 +19,7 @@
 //! Cycle model of a whole file: [`golden::bus::reg_file::RegFileModel`].
 //!
 //! Ports: `clock`, `reset` (synchronous); the Wishbone inputs; `wb_ack_o` (a register);
-//! to the cells, combinational from the bus inputs and `wb_ack_o`: `adr` (8, the word's
+//! to the cells, combinational from the bus inputs, `wb_ack_o` and `pending`: `adr` (8, the word's
 //! byte offset: `wb_adr_i` with bits 1:0 cleared), `rd`, `wr` (a read or write request this
 //! cycle), `lanes` (32, the byte lanes of `wb_sel_i` as a mask), `ones` (32, `wb_dat_i &
 //! lanes`: the bits written 1).
@@ -55,6 +59,8 @@ pub struct WbFront {
     /// The bits written 1.
     pub ones: Signal<Out, Bits<32>>,
     ack: DFF<Bit>,
+    /// A request was executed at the last edge: its ack comes at the next.
+    pending: DFF<Bit>,
     req: Signal<Local, Bit>,
     l_lanes: Signal<Local, Bits<32>>,
     adr_mask: Constant<Bits<ADDR_BITS>>,
@@ -85,6 +91,7 @@ impl Default for WbFront {
             lanes: Default::default(),
             ones: Default::default(),
             ack: Default::default(),
+            pending: Default::default(),
             req: Default::default(),
             l_lanes: Default::default(),
             adr_mask: Constant::new(u64::from((SPAN_BYTES - 1) & !3).into()),
@@ -100,10 +107,15 @@ impl Default for WbFront {
 impl Logic for WbFront {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, ack);
-        self.req.next = self.wb_cyc_i.val() & self.wb_stb_i.val() & (!self.ack.q.val());
-        self.ack.d.next = self.req.val();
+        dff_setup!(self, clock, ack, pending);
+        self.req.next = self.wb_cyc_i.val()
+            & self.wb_stb_i.val()
+            & (!self.ack.q.val())
+            & (!self.pending.q.val());
+        self.pending.d.next = self.req.val();
+        self.ack.d.next = self.pending.q.val();
         if self.reset.val() {
+            self.pending.d.next = false;
             self.ack.d.next = false;
         }
         self.l_lanes.next = self.z32.val();

@@ -28,7 +28,7 @@
 //! | `wb_dat_i` | in | 32 | write data |
 //! | `wb_sel_i` | in | 4 | byte lanes of a write |
 //! | `wb_dat_o` | out | 32 | read data, valid with `wb_ack_o` (0 otherwise) |
-//! | `wb_ack_o` | out | 1 | one cycle after the request edge |
+//! | `wb_ack_o` | out | 1 | high for one cycle from the edge after the request edge |
 //! | `irq` | out | 1 | level: (`IRQ_STATUS` & `IRQ_ENABLE`) ≠ 0 |
 //! | `cfg_dt`, `cfg_timeout` | out | N | `CFG_DT`, `CFG_TIMEOUT` |
 //! | `cfg_filter` | out | FB | `CFG_FILTER` |
@@ -45,11 +45,13 @@
 //!
 //! # Timing
 //!
-//! A request sampled at edge k (`wb_cyc_i & wb_stb_i` while `wb_ack_o` is low) is executed
-//! at edge k and acknowledged in the cycle after it: two cycles per access, `wb_ack_o` low
-//! for at least one cycle between accesses. A status input is read as it stood before edge
-//! k. A configuration write shows on its port after edge k; `clear_faults` is high in the
-//! cycle after edge k (with `wb_ack_o`).
+//! A request sampled at edge k (`wb_cyc_i & wb_stb_i` while `wb_ack_o` is low and no
+//! request was taken at edge k − 1) is executed at edge k and acknowledged in the cycle
+//! after edge k + 1: three cycles per access, `wb_ack_o` low for at least two cycles
+//! between accesses (the read data's second register stage, [`crate::bus::read_data`]). A
+//! status input is read as it stood before edge k. A configuration write shows on its port
+//! after edge k; `clear_faults` is high in the cycle after edge k (the cycle before
+//! `wb_ack_o`).
 //!
 //! # Implementation
 //!
@@ -574,31 +576,30 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         self.mt.rd.next = self.file.rd.val();
         self.mt.value.next = self.snapshot.seen_mt.val();
 
-        // Read data: the cells' words (each 0 away from its offset).
-        self.file.cells.next = self.id.rdata.val()
+        // Read data: the cells' words (each 0 away from its offset), grouped by 16-byte block
+        // of the map (a group's words share the offset's bits 7:4, so that its address
+        // decode is one term; the constants of 0x00-0x1C, which need no data path, together).
+        self.file.group0.next = self.id.rdata.val()
             | self.version.rdata.val()
             | self.param0.rdata.val()
             | self.param1.rdata.val()
             | self.lines.rdata.val()
             | self.dt_default.rdata.val()
             | self.timeout_default.rdata.val()
-            | self.clock_hz.rdata.val()
-            | self.ctrl.rdata.val()
+            | self.clock_hz.rdata.val();
+        self.file.group1.next = self.ctrl.rdata.val()
             | self.r_cfg_dt.rdata.val()
             | self.r_cfg_timeout.rdata.val()
-            | self.r_cfg_filter.rdata.val()
-            | self.status.rdata.val()
-            | self.r_position.rdata.val()
+            | self.r_cfg_filter.rdata.val();
+        self.file.group2.next = self.status.rdata.val() | self.file.irq_rdata.val();
+        self.file.group3.next = self.r_position.rdata.val()
             | self.r_z_latch.rdata.val()
             | self.r_nep.rdata.val()
-            | self.r_ndt.rdata.val()
-            | self.n1.rdata.val()
-            | self.n2.rdata.val()
-            | self.n3.rdata.val()
-            | self.pc.rdata.val()
-            | self.et.rdata.val()
-            | self.mt.rdata.val()
-            | self.glitch.rdata.val()
+            | self.r_ndt.rdata.val();
+        self.file.group4.next = self.n1.rdata.val() | self.n2.rdata.val();
+        self.file.group5.next = self.n3.rdata.val() | self.pc.rdata.val();
+        self.file.group6.next = self.et.rdata.val() | self.mt.rdata.val();
+        self.file.group7.next = self.glitch.rdata.val()
             | self.illegal.rdata.val()
             | self.rev.rdata.val()
             | self.snap_count.rdata.val();

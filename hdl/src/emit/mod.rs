@@ -196,8 +196,9 @@ pub fn ports_markdown(p: &Params) -> String {
         "\n**Configuration.** The core registers every configuration input once, at its \
          edge (the glitch filters compare `cfg_filter` into a register an edge ahead), so an \
          input reaches at most one carry chain before a register. A new `cfg_filter` or `cfg_z_mode` \
-         acts {} edge after the edge that samples it; `stalled` and `valid` compare with a \
-         new `cfg_timeout` from the edge that samples it. A new `cfg_mode` \
+         acts {} edge after the edge that samples it; `stalled` and `valid` are registers \
+         loaded with their conditions, so they show a new `cfg_timeout` {} edge after the \
+         edge that samples it. A new `cfg_mode` \
          resets the whole core (as `reset` does) {} edge after the edge that samples it, \
          with the new mode in place. The effective dt of a new `cfg_dt` shows in \
          `dt_active` one edge after the edge that samples it, and the dt windows (Rairán's \
@@ -208,7 +209,11 @@ pub fn ports_markdown(p: &Params) -> String {
          those), and that register powers up high, so the first edge after configuration \
          resets the core too. The same figures are `reset_to_effect`, `config_to_effect` and \
          `cfg_dt_to_window` in the manifest.\n",
-        l.config_to_effect, l.config_to_effect, l.cfg_dt_to_window, l.reset_to_effect
+        l.config_to_effect,
+        l.config_to_effect,
+        l.config_to_effect,
+        l.cfg_dt_to_window,
+        l.reset_to_effect
     ));
     md.push_str(&format!(
         "\n## `encspeed_ecc`: the core with the eccentricity-corrected speeds\n\n\

@@ -65,7 +65,7 @@ fn header_of(p: &Params, file: &str, function: String) -> String {
             p.counter_max()
         ),
         function,
-        "Bus: a request (wb_cyc_i & wb_stb_i while wb_ack_o is low) is executed at the edge that samples it and acknowledged in the cycle after; two cycles per access; no wb_err_o.".into(),
+        "Bus: a request (wb_cyc_i & wb_stb_i while the slave is idle) is executed at the edge that samples it and acknowledged in the cycle after the next edge; three cycles per access; no wb_err_o.".into(),
         format!(
             "Speeds: {} bits, speed_frac_bits = {}: read SPEED_*_LO (latches HI) then SPEED_*_HI, \
              a 64-bit sign extension; value = raw * 2^-{} omega_lim.",
@@ -146,11 +146,16 @@ the field widths follow the generation parameters: read `PARAM0`/`PARAM1` at run
 
 ## Bus timing
 
-- A request is `wb_cyc_i & wb_stb_i` while `wb_ack_o` is low. One sampled at clock edge k
-  is executed at edge k; `wb_ack_o` is high for the one cycle after it, with the read data
-  on `wb_dat_o` (0 in every other cycle). Every access takes two cycles; a master that
-  keeps `wb_stb_i` high gets an access every other cycle. There is no `wb_err_o` and no
-  wait state.
+- A request is `wb_cyc_i & wb_stb_i` while the slave is idle (`wb_ack_o` low and no
+  request taken at the edge before). One sampled at clock edge k is executed at edge k;
+  `wb_ack_o` is high for the one cycle after edge k + 1, with the read data (the register
+  as it stood before edge k) on `wb_dat_o` (0 in every other cycle). Every access takes
+  three cycles; a master that keeps `wb_stb_i` high gets an access every third cycle. A
+  master must wait for `wb_ack_o`, as every classic master does; the address, data, byte
+  lanes and `wb_we_i` are sampled at edge k only. There is no `wb_err_o`.
+- Why the extra cycle: the read multiplexer of some 30 words behind the address decode
+  does not fit one 10 ns cycle on an iCE40; the words are ORed in eight groups into
+  registers at edge k and the groups into `wb_dat_o` at edge k + 1.
 - Registers are 32-bit words at word-aligned byte offsets; `wb_adr_i[1:0]` are ignored.
   Reads of unmapped offsets return 0; writes to them, to read-only registers and to
   reserved bits are acknowledged and ignored. Writes honour `wb_sel_i` byte lanes.

@@ -162,6 +162,10 @@ pub struct EncspeedCore<const N: usize, const P: usize, const S: usize> {
     filter_reg: DFF<Bits<FB>>,
     z_mode_reg: DFF<Bits<2>>,
     cfg_error_reg: DFF<Bit>,
+    /// `stalled` and `valid`, registered from their conditions (0 at a reset edge): the
+    /// timeout's carry chain ends here, not in the register file's snapshot behind it.
+    stalled_reg: DFF<Bit>,
+    valid_reg: DFF<Bit>,
     mode_reset: ModeReset,
     /// `rst` or the decoder's `first`, as a register of its own (from their next values);
     /// high at power-up, as `rst` is.
@@ -294,6 +298,8 @@ impl<const N: usize, const P: usize, const S: usize> EncspeedCore<N, P, S> {
             filter_reg: Default::default(),
             z_mode_reg: Default::default(),
             cfg_error_reg: Default::default(),
+            stalled_reg: Default::default(),
+            valid_reg: Default::default(),
             mode_reset: Default::default(),
             engine_reset_reg: DFFWithInit::new(true),
             rst: Default::default(),
@@ -354,6 +360,8 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
             filter_reg,
             z_mode_reg,
             cfg_error_reg,
+            stalled_reg,
+            valid_reg,
             window_last,
             restart_pos,
             position_before,
@@ -570,10 +578,13 @@ impl<const N: usize, const P: usize, const S: usize> Logic for EncspeedCore<N, P
         self.speed_et.next = self.baseline.speed_et.val();
         self.speed_mt.next = self.baseline.speed_mt.val();
         self.baseline_strobe.next = self.baseline.valid.val();
-        self.stalled.next = self.timebase.stalled.val();
-        self.valid.next = self.calc.have_speeds.val()
+        self.stalled_reg.d.next = self.timebase.stalled.val() & !self.rst.val();
+        self.valid_reg.d.next = self.calc.have_speeds.val()
             & !self.timebase.stalled.val()
-            & !self.cfg_error_reg.q.val();
+            & !self.cfg_error_reg.q.val()
+            & !self.rst.val();
+        self.stalled.next = self.stalled_reg.q.val();
+        self.valid.next = self.valid_reg.q.val();
         self.fault_illegal.next = self.faults.fault_illegal.val();
         self.fault_overspeed.next = self.faults.fault_overspeed.val();
         self.fault_revolution.next = self.faults.fault_revolution.val();

@@ -19,7 +19,7 @@
 //! `wb_sel_i[3:0]`, `wb_dat_o[31:0]`, `wb_ack_o`, `irq`.
 //!
 //! # Timing
-//! As `encspeed_wb`: every block's outputs are registers, an access takes two cycles, a
+//! As `encspeed_wb`: every block's outputs are registers, an access takes three cycles, a
 //! write acts in `encspeed_ecc` from the edge after the write edge, and a read returns the
 //! outputs as they stood in the request cycle. The routing is the one combinational path
 //! (`wb_adr_i` → each slave's request), ahead of the slaves' registers.
@@ -66,7 +66,7 @@ pub struct EncspeedEccWb<const N: usize, const P: usize, const S: usize, const C
     pub wb_sel_i: Signal<In, Bits<4>>,
     /// Wishbone: read data (0 outside a read's ack cycle).
     pub wb_dat_o: Signal<Out, Bits<32>>,
-    /// Wishbone: acknowledge, the cycle after the request edge.
+    /// Wishbone: acknowledge, for one cycle from the edge after the request edge.
     pub wb_ack_o: Signal<Out, Bit>,
     /// Interrupt request, level: either slave's.
     pub irq: Signal<Out, Bit>,

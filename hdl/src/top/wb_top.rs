@@ -24,9 +24,9 @@
 //!
 //! # Timing
 //! Both halves have registered outputs, so there is no combinational path between them
-//! and none from an input to an output. An access takes two cycles (request edge, ack
-//! cycle); a configuration write acts in the core from the edge after the ack cycle's
-//! start (one edge after the write edge); a read returns the core's outputs as they stood
+//! and none from an input to an output. An access takes three cycles (request edge, read
+//! stage edge, ack cycle); a configuration write acts in the core from the edge after the
+//! write edge (the edge that raises `wb_ack_o`); a read returns the core's outputs as they stood
 //! in the request cycle. A change of `CTRL.MODE` resets the core at the edge after the one
 //! that sees it (the core registers its configuration inputs once; docs/ports.md).
 
@@ -69,7 +69,7 @@ pub struct EncspeedWb<const N: usize, const P: usize, const S: usize> {
     pub wb_sel_i: Signal<In, Bits<4>>,
     /// Wishbone: read data (0 outside a read's ack cycle).
     pub wb_dat_o: Signal<Out, Bits<32>>,
-    /// Wishbone: acknowledge, the cycle after the request edge.
+    /// Wishbone: acknowledge, for one cycle from the edge after the request edge.
     pub wb_ack_o: Signal<Out, Bit>,
     /// Interrupt request, level.
     pub irq: Signal<Out, Bit>,

@@ -137,7 +137,7 @@ fn run<const S: usize>(seed: u64, cycles: usize) -> Coverage {
         }
         // Bus: a classic master holds its request through the ack; otherwise a new access,
         // an idle cycle or (rarely) arbitrary signals.
-        let acked = model.outputs().wb_ack_o;
+        let (acked, busy) = (model.outputs().wb_ack_o, model.busy());
         if held && acked {
             held = false;
             bus = WbBus::default();
@@ -182,7 +182,7 @@ fn run<const S: usize>(seed: u64, cycles: usize) -> Coverage {
         }
         let reset = k < 2 || r.next().is_multiple_of(3000);
         let inp = EccRegsInputs { reset, bus, status };
-        let req = bus.wb_cyc_i && bus.wb_stb_i && !acked && !reset;
+        let req = bus.wb_cyc_i && bus.wb_stb_i && !busy && !reset;
         let want = model.step(&inp);
         let got = step(&mut uut, &inp);
         assert_eq!(got, want, "S = {S}, seed {seed:#x}, cycle {k}: {inp:?}");

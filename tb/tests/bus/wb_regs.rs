@@ -12,7 +12,7 @@
 //!
 //! The bus follows the classic protocol as a master would (request held through its ack
 //! cycle, back-to-back requests when no idle op comes between), driven by the model's
-//! `wb_ack_o`; the "chaos" cycles break the protocol on purpose. The status stream comes
+//! `wb_ack_o` and busy state; the "chaos" cycles break the protocol on purpose. The status stream comes
 //! from a seeded generator; proptest chooses the seed and the list of bus operations.
 
 use crate::common;
@@ -238,7 +238,8 @@ impl Tracer {
     }
 
     /// One access: the request is held until the slave's ack cycle and through it, as a
-    /// classic master does (a cycle with ack high left by a chaos cycle is waited out).
+    /// classic master does (an access left in progress by a chaos cycle is waited out: the
+    /// slave takes no request until it is idle).
     fn access(&mut self, we: bool, adr: u32, dat: u32, sel: u8) {
         let bus = WbBus {
             wb_cyc_i: true,
@@ -248,16 +249,20 @@ impl Tracer {
             wb_dat_i: dat,
             wb_sel_i: sel,
         };
-        let mut sampled = false;
-        for _ in 0..4 {
-            let ack_now = self.model.outputs().wb_ack_o;
-            self.cycle(false, bus);
-            if sampled && ack_now {
-                return;
+        for _ in 0..2 {
+            if self.model.busy() {
+                self.cycle(false, bus);
             }
-            sampled |= !ack_now;
         }
-        panic!("no ack within 4 cycles");
+        assert!(
+            !self.model.busy(),
+            "a chaos cycle's access lasts 2 more cycles at most"
+        );
+        // Taken at this edge, acknowledged from the next, held through the ack cycle.
+        self.cycle(false, bus);
+        self.cycle(false, bus);
+        assert!(self.model.outputs().wb_ack_o, "ack after the second edge");
+        self.cycle(false, bus);
     }
 }
 
@@ -297,7 +302,7 @@ fn trace(map: &RegMap, seed: u64, ops: &[Op]) -> (Trace, Coverage) {
         cov.acks += usize::from(o.wb_ack_o);
         cov.clears += usize::from(o.clear_faults);
         cov.irqs += usize::from(o.irq);
-        // An access executed at this edge: its ack is in the output after it.
+        // An access acknowledged from this edge (the bus held since its request edge).
         let was_acked = k > 0 && out[k - 1].1.wb_ack_o;
         if o.wb_ack_o && !was_acked && !i.reset {
             if i.bus.wb_we_i {
@@ -445,6 +450,7 @@ fn hardware_reads_id_format_and_a_coherent_speed_by_hand() {
             bus,
             status: *st,
         };
+        assert!(!step(uut, &inp).wb_ack_o, "executed, not yet acknowledged");
         let o = step(uut, &inp);
         assert!(o.wb_ack_o);
         let held = step(uut, &inp);
