@@ -74,6 +74,43 @@ fn generate_for_lines_not_a_multiple_of_4_writes_the_core_and_says_why_not_the_e
     );
 }
 
+#[test]
+fn generate_with_channels_writes_the_wide_top_and_says_why_not_the_one_channel_tops() {
+    let out = scratch("generate-channels");
+    let o = encspeed(&[
+        "generate",
+        "--channels",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v = std::fs::read_to_string(out.join("encspeed_wb.v")).unwrap();
+    assert!(v.starts_with("// Command: encspeed generate") && v.contains("--channels 3"));
+    // Three encoders, 8 + 2 address bits, one interrupt per channel.
+    for port in [
+        "input wire  [2:0] enc_a",
+        "input wire  [9:0] wb_adr_i",
+        "output reg  [2:0] irq",
+    ] {
+        assert!(v.contains(port), "{port}");
+    }
+    let h = std::fs::read_to_string(out.join("encspeed_regs.h")).unwrap();
+    assert!(
+        h.contains("ENCSPEED_CH2_BASE") && h.contains("0x200u"),
+        "{h}"
+    );
+    assert!(out.join("encspeed_core.v").exists());
+    assert!(!out.join("encspeed_ecc_wb.v").exists());
+    assert!(!out.join("encspeed_board_icebreaker.v").exists());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("encspeed_ecc_wb.v not written: channels = 3")
+            && err.contains("one encoder PMOD"),
+        "{err}"
+    );
+}
+
 /// Five revolutions at 6000 r/min (10 M/T windows each) on encspeed_ecc.v in Verilator,
 /// with the corrector loaded from the Verilog's own identification (--identify): it
 /// finds e = 0.35/30 (by hand) within 1 % and θ0 = 50° within 1°; before correction the
@@ -319,6 +356,7 @@ const INVALID: &[(&str, &str, &str, &str)] = &[
     ("counter_bits", "--counter-bits", "7", "7"),
     ("timeout_s", "--timeout-s", "-1", "-1"),
     ("estimators", "--estimators", "pc,mt", r#"["pc", "mt"]"#),
+    ("channels", "--channels", "9", "9"),
 ];
 
 fn spec_keys() -> Vec<String> {

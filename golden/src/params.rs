@@ -29,6 +29,10 @@ pub const POSITION_BITS: u32 = 32;
 /// Most lines per revolution: the x4 count of a revolution, 4·lines, must fit 32 bits.
 pub const MAX_LINES: u32 = 1 << 30;
 
+/// Most encoder channels behind one `encspeed_wb` window (`channels`): the channel is the
+/// three address bits above a channel's 256-byte register window.
+pub const MAX_CHANNELS: u32 = 8;
+
 /// Parameters as a user states them. Units are in the field names' docs.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -49,6 +53,10 @@ pub struct Spec {
     /// The speed outputs the core computes ([`SpeedOutput`]); each one left out reads 0
     /// and its hardware is not built. `n3` is always required.
     pub estimators: Vec<SpeedOutput>,
+    /// Encoder channels of `encspeed_wb`, 1..=[`MAX_CHANNELS`]: each is a core with its own
+    /// register window of [`crate::bus::regmap::SPAN_BYTES`] bytes, channel c at byte
+    /// offset c · 0x100 (`crate::top::wb_channels`). The other tops have one channel.
+    pub channels: u32,
 }
 
 /// A speed output of the core that a build may leave out (`estimators`): Rairán's n1, n2
@@ -133,6 +141,7 @@ impl Default for Spec {
             counter_bits: 24,
             timeout_s: 1.0,
             estimators: SpeedOutput::ALL.to_vec(),
+            channels: 1,
         }
     }
 }
@@ -168,6 +177,8 @@ pub enum ParamError {
     Estimators(String),
     /// The eccentricity tops need the M/T estimator ([`Params::check_ecc`]).
     EccWithoutMt,
+    /// `channels` is outside 1..=[`MAX_CHANNELS`].
+    Channels(u32),
 }
 
 impl fmt::Display for ParamError {
@@ -238,6 +249,11 @@ impl fmt::Display for ParamError {
                 f,
                 "estimators: the eccentricity corrector corrects the M/T speed, so mt \
                  must be one of the estimators"
+            ),
+            ParamError::Channels(v) => write!(
+                f,
+                "channels = {v}: must be 1..={MAX_CHANNELS} (encoder channels behind one \
+                 Wishbone window, {MAX_CHANNELS} windows of 256 bytes at most)"
             ),
         }
     }
@@ -367,6 +383,9 @@ impl Params {
             ));
         }
         spec.estimators = estimators;
+        if !(1..=MAX_CHANNELS).contains(&spec.channels) {
+            return Err(ParamError::Channels(spec.channels));
+        }
         Ok(Params {
             spec,
             timeout_dt: timeout_dt as u64,
@@ -408,10 +427,11 @@ impl Params {
         names.join(",")
     }
 
-    /// The parameters as the generated files' headers state them, one line.
+    /// The parameters as the generated files' headers state them, one line (`channels`
+    /// only when there are several, as [`crate::provenance::generate_command`] names it).
     pub fn summary(&self) -> String {
         let s = &self.spec;
-        format!(
+        let mut line = format!(
             "clock_hz = {}, lines = {}, dt_cycles = {}, counter_bits = {}, timeout_s = {}, \
              estimators = {}",
             s.clock_hz,
@@ -420,7 +440,16 @@ impl Params {
             s.counter_bits,
             s.timeout_s,
             self.estimator_list()
-        )
+        );
+        if s.channels > 1 {
+            line.push_str(&format!(", channels = {}", s.channels));
+        }
+        line
+    }
+
+    /// Encoder channels of `encspeed_wb` (`channels`, 1..=[`MAX_CHANNELS`]).
+    pub fn channels(&self) -> u32 {
+        self.spec.channels
     }
 
     /// The specification these parameters were validated from.

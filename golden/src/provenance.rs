@@ -36,6 +36,9 @@ pub fn generate_command(p: &Params) -> String {
     if s.estimators != SpeedOutput::ALL {
         command.push_str(&format!(" --estimators {}", p.estimator_list()));
     }
+    if s.channels > 1 {
+        command.push_str(&format!(" --channels {}", s.channels));
+    }
     command
 }
 

@@ -90,4 +90,5 @@ pub use top::core::EncspeedCore;
 pub use top::ecc_top::EncspeedEcc;
 pub use top::ecc_wb_top::EncspeedEccWb;
 pub use top::fault_flags::FaultFlags;
+pub use top::wb_channels::EncspeedWbChannels;
 pub use top::wb_top::EncspeedWb;

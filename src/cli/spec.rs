@@ -29,7 +29,9 @@ pub struct SpecArgs {
 /// unit and range (the help line and the comment in `--print-config`; the default is
 /// added from `Spec::default()`). `None` for a key that is not a field.
 fn describe(key: &str) -> Option<(&'static str, &'static str, String)> {
-    use golden::params::{MAX_COUNTER_BITS, MAX_LINES, MIN_COUNTER_BITS, MIN_DT_CYCLES};
+    use golden::params::{
+        MAX_CHANNELS, MAX_COUNTER_BITS, MAX_LINES, MIN_COUNTER_BITS, MIN_DT_CYCLES,
+    };
     Some(match key {
         "clock_hz" => (
             "clock-hz",
@@ -65,6 +67,15 @@ fn describe(key: &str) -> Option<(&'static str, &'static str, String)> {
             "Speed outputs to build, comma-separated, of n1,n2,n3,pc,et,mt; n3 is required, \
              one left out reads 0 and its hardware is not built"
                 .to_string(),
+        ),
+        "channels" => (
+            "channels",
+            "N",
+            format!(
+                "Encoder channels of encspeed_wb, each a core with its own 256-byte register \
+                 window (channel c at c * 0x100); 1..={MAX_CHANNELS}; the board tops and \
+                 encspeed_ecc_wb have one"
+            ),
         ),
         _ => return None,
     })

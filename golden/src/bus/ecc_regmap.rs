@@ -9,8 +9,9 @@
 //! file, exactly as [`crate::bus::regmap`] describes it (same offsets, fields and behaviour);
 //! offsets from [`ECC_BASE`] up are this window, served by its own slave with the same bus
 //! protocol (a request is executed at the edge that samples it and acknowledged in the
-//! cycle after the next edge: three cycles per access; unmapped offsets read 0; writes honour `wb_sel_i`; reserved bits read 0).
-//! `irq` is the OR of both slaves' interrupt requests.
+//! cycle after the next edge: three cycles per access; unmapped offsets read 0; writes
+//! honour `wb_sel_i`; reserved bits read 0). `irq` is the OR of both slaves' interrupt
+//! requests.
 //!
 //! # Coefficients
 //!

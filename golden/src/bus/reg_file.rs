@@ -263,7 +263,7 @@ impl RegFileModel {
             self.shadows.len(),
             "one value per shadow pair"
         );
-        let req = Request::decode(c.bus, self.s.ack || self.s.pending);
+        let req = Request::decode(c.bus, self.busy());
         if c.reset {
             let s = &mut self.s;
             (s.pending, s.pending_dat, s.ack, s.dat) = (false, 0, false, 0);

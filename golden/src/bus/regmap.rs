@@ -17,11 +17,12 @@
 //! accesses of a master that keeps `wb_stb_i` high. The second edge is the read
 //! multiplexer's pipeline stage: the file meets a 100 MHz clock on an iCE40HX8K with it.
 //! A master must wait for `wb_ack_o` (as every classic master does), and the address, data
-//! and `wb_we_i` it holds through the access are sampled at edge k only. There is no `wb_err_o`: a read of an unmapped offset returns 0 and
-//! a write to it, or to a read-only register or bit, is acknowledged and ignored. Writes
-//! honour `wb_sel_i` (byte lane j = bits 8j+7..8j): a lane that is not selected is neither
-//! written nor, for W1C bits, cleared. Register bits above a field's width are reserved:
-//! they read 0 and ignore writes.
+//! and `wb_we_i` it holds through the access are sampled at edge k only. There is no
+//! `wb_err_o`: a read of an unmapped offset returns 0 and a write to it, or to a read-only
+//! register or bit, is acknowledged and ignored. Writes honour `wb_sel_i` (byte lane j =
+//! bits 8j+7..8j): a lane that is not selected is neither written nor, for W1C bits,
+//! cleared. Register bits above a field's width are reserved: they read 0 and ignore
+//! writes.
 //!
 //! # Coherence
 //!
@@ -1034,7 +1035,56 @@ pub fn registers(p: &Params) -> Vec<Register> {
 /// regenerates it and the licence.
 pub fn c_header(p: &Params) -> String {
     use crate::provenance::{generate_command, preamble, Comment};
-    preamble(Comment::Block, &generate_command(p)) + &RegMap::new(p).c_header()
+    let mut h = RegMap::new(p).c_header();
+    if p.channels() > 1 {
+        let end = h.rfind("\n#endif").expect("the header ends with its guard");
+        h.insert_str(end, &channel_defines(p.channels()));
+    }
+    preamble(Comment::Block, &generate_command(p)) + &h
+}
+
+/// The `#define`s of an `encspeed_wb` with `channels` (≥ 2) channels: their number, the
+/// address width, and each channel's base (`crate::top::wb_channels`).
+fn channel_defines(channels: u32) -> String {
+    use crate::top::wb_channels::{address_bits, channel_base};
+    let mut h = String::from(
+        "\n/* Channels: encspeed_wb with several encoders, one register window each; channel c's\n \
+         * register R is at ENCSPEED_CHANNEL_BASE(c) + ENCSPEED_R_OFFSET. Windows above the last\n \
+         * channel read 0. */\n",
+    );
+    c_define(
+        &mut h,
+        "ENCSPEED_CHANNELS",
+        &format!("{channels}u"),
+        Some("encoder channels"),
+    );
+    c_define(
+        &mut h,
+        "ENCSPEED_CHANNEL_ADDR_BITS",
+        &format!("{}u", address_bits(channels)),
+        Some("wb_adr_i width of the top (byte address)"),
+    );
+    c_define(
+        &mut h,
+        "ENCSPEED_CHANNEL_STRIDE",
+        &format!("0x{SPAN_BYTES:X}u"),
+        Some("bytes between channel windows"),
+    );
+    c_define(
+        &mut h,
+        "ENCSPEED_CHANNEL_BASE(c)",
+        &format!("((unsigned)(c) * 0x{SPAN_BYTES:X}u)"),
+        Some("byte address of channel c's window"),
+    );
+    for c in 0..channels {
+        c_define(
+            &mut h,
+            &format!("ENCSPEED_CH{c}_BASE"),
+            &format!("0x{:03X}u", channel_base(c)),
+            None,
+        );
+    }
+    h
 }
 
 /// The register map of `p` as Markdown ([`RegMap::markdown`]).

@@ -48,13 +48,13 @@
 //!   compare `cfg_filter` into a register an edge ahead, the same delay): a change of
 //!   `cfg_filter` or `cfg_z_mode` acts from the edge after the one that samples it;
 //!   `stalled` and `valid` show a new `cfg_timeout` from the edge after the one that
-//!   samples it (they are registered, below). The effective dt is registered (`dt_active`, one edge later) and the time bases
-//!   compare with that register an edge ahead, so a `cfg_dt` change moves the dt windows
-//!   from two edges after it is sampled. A change of `cfg_mode` is registered with
-//!   the mode ([`ModeReset`]): the edge after the one that sees it resets the whole core
-//!   with the new mode in place (as `reset` does: position, estimators, counters and
-//!   faults; a count in one mode means nothing in another), then the start-up hold runs
-//!   again. `cfg_error` is registered from the inputs (one edge).
+//!   samples it (they are registered, below). The effective dt is registered (`dt_active`,
+//!   one edge later) and the time bases compare with that register an edge ahead, so a
+//!   `cfg_dt` change moves the dt windows from two edges after it is sampled. A change of
+//!   `cfg_mode` is registered with the mode ([`ModeReset`]): the edge after the one that
+//!   sees it resets the whole core with the new mode in place (as `reset` does: position,
+//!   estimators, counters and faults; a count in one mode means nothing in another), then
+//!   the start-up hold runs again. `cfg_error` is registered from the inputs (one edge).
 //! - **Reset.** `reset` is registered too ([`ModeReset`]): the core's registers reset at
 //!   the edge after each edge that samples `reset` high
 //!   ([`crate::top::ports::Latency::reset_to_effect`]), so that a flip-flop drives the

@@ -8,4 +8,5 @@ pub mod error_budget;
 pub mod mode_reset;
 pub mod port_fields;
 pub mod ports;
+pub mod wb_channels;
 pub mod wb_top;

@@ -20,6 +20,13 @@ pub fn board_files(
     spec: &Spec,
     command: &str,
 ) -> Result<Vec<(String, String)>, String> {
+    if spec.channels != 1 {
+        return Err(format!(
+            "{} has one encoder PMOD, so its top has one channel (channels = {})",
+            board.name(),
+            spec.channels
+        ));
+    }
     let p = board
         .params(spec)
         .map_err(|e| format!("{} at {} Hz: {e}", board.name(), board.clock_hz()))?;

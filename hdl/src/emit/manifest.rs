@@ -87,8 +87,15 @@ struct Bus {
     data_bits: usize,
     /// Width of `wb_adr_i`, a byte address.
     addr_bits: usize,
-    /// Clock cycles of every access (request edge, then the `wb_ack_o` cycle).
+    /// Clock cycles of every access (the request cycle, the read stage's cycle, then the
+    /// `wb_ack_o` cycle).
     access_cycles: u32,
+    /// Encoder channels behind the slave (`--channels`, more than one), channel c's
+    /// register window at byte address c · `channel_stride`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    channels: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    channel_stride: Option<u32>,
     /// Register map version, major in bits 31:16.
     map_version: u32,
     /// The C header of the map.
@@ -161,6 +168,7 @@ pub fn manifest(top: Top, p: &Params) -> String {
         Top::Core | Top::Ecc => (None, Vec::new()),
         Top::Wb | Top::EccWb => {
             let ecc = top == Top::EccWb;
+            let several = (top == Top::Wb && p.channels() > 1).then_some(p.channels());
             let mut registers = entries(regmap::registers(p));
             if ecc {
                 registers.extend(entries(ecc_regmap::registers(p.speed_bits())));
@@ -168,8 +176,10 @@ pub fn manifest(top: Top, p: &Params) -> String {
             let bus = Bus {
                 standard: "Wishbone B4 classic slave",
                 data_bits: regmap::DATA_BITS,
-                addr_bits: regmap::ADDR_BITS,
-                access_cycles: 2,
+                addr_bits: golden::top::wb_channels::address_bits(several.unwrap_or(1)) as usize,
+                access_cycles: 3,
+                channels: several,
+                channel_stride: several.map(|_| regmap::SPAN_BYTES),
                 map_version: regmap::MAP_VERSION,
                 c_header: super::wb::HEADER_FILE,
                 ecc_window_base: ecc.then_some(ecc_regmap::ECC_BASE),

@@ -54,6 +54,13 @@ impl Top {
 
     /// Whether this top can be generated for `p`: Ok, or why not.
     pub fn check(self, p: &Params) -> Result<(), String> {
+        if self == Top::EccWb && p.channels() > 1 {
+            return Err(format!(
+                "channels = {}: encspeed_ecc_wb has one encoder channel (several channels \
+                 are encspeed_wb's)",
+                p.channels()
+            ));
+        }
         if self.has_ecc() {
             golden::top::ecc_top::check(p)
         } else {
@@ -65,6 +72,9 @@ impl Top {
     pub fn ports(self, p: &Params) -> Vec<Port> {
         match self {
             Top::Core => golden::top::ports::core_ports(p.counter_bits()),
+            Top::Wb if p.channels() > 1 => {
+                golden::top::wb_channels::wb_channels_ports(p.channels())
+            }
             Top::Wb | Top::EccWb => golden::top::wb_top::wb_top_ports(),
             Top::Ecc => golden::top::ports::ecc_ports(p.counter_bits()),
         }

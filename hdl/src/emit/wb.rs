@@ -7,11 +7,14 @@
 //! this machine), so the shipped copies can be checked for staleness byte for byte.
 
 use crate::emit::regenerate_command;
+use crate::sim::wb_channels_sim::build_wb_channels;
 use crate::sim::wb_sim::build_wb;
 use golden::bus::ecc_regmap::{ECC_BASE, ECC_MAP_VERSION};
 use golden::bus::regmap::{self, ADDR_BITS, MAP_VERSION, SPAN_BYTES};
 use golden::params::{Params, Spec};
-use golden::top::wb_top::{wb_top_ports, TOP_MODULE};
+use golden::top::ports::Port;
+use golden::top::wb_channels::address_bits;
+use golden::top::wb_top::TOP_MODULE;
 use std::path::{Path, PathBuf};
 
 /// File name of the emitted Verilog.
@@ -27,14 +30,28 @@ pub const REGISTERS_DOC: &str = "docs/registers.md";
 
 /// The comment header of `encspeed_wb.v`.
 fn verilog_header(p: &Params) -> String {
-    let function = format!(
-        "Function: encspeed_core (its logic is included in this file) behind a Wishbone B4 \
-         classic slave, 32-bit data, {ADDR_BITS}-bit byte address ({SPAN_BYTES}-byte window), register map \
-         version {}.{}: {HEADER_FILE}, {REGISTERS_DOC}.",
-        MAP_VERSION >> 16,
-        MAP_VERSION & 0xFFFF
-    );
-    header_of(p, VERILOG_FILE, function)
+    let function = if p.channels() > 1 {
+        format!(
+            "Function: {} channels of encspeed_core (its logic is included in this file), each \
+             behind its own register window, on one Wishbone B4 classic slave, 32-bit data, \
+             {}-bit byte address: channel c's registers at c * 0x{SPAN_BYTES:X} + offset \
+             (windows above the last channel read 0), register map version {}.{}: \
+             {HEADER_FILE}, {REGISTERS_DOC}.",
+            p.channels(),
+            address_bits(p.channels()),
+            MAP_VERSION >> 16,
+            MAP_VERSION & 0xFFFF
+        )
+    } else {
+        format!(
+            "Function: encspeed_core (its logic is included in this file) behind a Wishbone B4 \
+             classic slave, 32-bit data, {ADDR_BITS}-bit byte address ({SPAN_BYTES}-byte window), register map \
+             version {}.{}: {HEADER_FILE}, {REGISTERS_DOC}.",
+            MAP_VERSION >> 16,
+            MAP_VERSION & 0xFFFF
+        )
+    };
+    header_of(p, VERILOG_FILE, function, &crate::Top::Wb.ports(p))
 }
 
 /// The comment header of `encspeed_ecc_wb.v`.
@@ -50,12 +67,17 @@ fn ecc_wb_verilog_header(p: &Params) -> String {
         ECC_MAP_VERSION >> 16,
         ECC_MAP_VERSION & 0xFFFF
     );
-    header_of(p, ECC_WB_VERILOG_FILE, function)
+    header_of(
+        p,
+        ECC_WB_VERILOG_FILE,
+        function,
+        &crate::Top::EccWb.ports(p),
+    )
 }
 
 /// A Wishbone top's comment header: file, command, parameters, `function`, bus and speed
-/// rules, ports.
-fn header_of(p: &Params, file: &str, function: String) -> String {
+/// rules, `ports`.
+fn header_of(p: &Params, file: &str, function: String, ports: &[Port]) -> String {
     let mut lines = vec![
         format!("Parameters: {}", p.summary()),
         format!(
@@ -77,7 +99,7 @@ fn header_of(p: &Params, file: &str, function: String) -> String {
         "A write that changes CTRL.MODE resets the core (not the registers) at the next edge.".into(),
         "Ports:".into(),
     ];
-    lines.extend(wb_top_ports().iter().map(super::port_line));
+    lines.extend(ports.iter().map(super::port_line));
     let body: String = lines.iter().map(|l| format!("// {l}\n")).collect();
     let module = file.trim_end_matches(".v");
     super::file_header(&regenerate_command(p), module, &body)
@@ -86,7 +108,11 @@ fn header_of(p: &Params, file: &str, function: String) -> String {
 /// The files for `p`, as (file name, contents): `encspeed_wb.v` (top module
 /// `encspeed_wb`) and `encspeed_regs.h`. Deterministic.
 pub fn emit_wb(p: &Params) -> Vec<(&'static str, String)> {
-    let body = build_wb(p).verilog(TOP_MODULE);
+    let body = if p.channels() > 1 {
+        build_wb_channels(p).verilog(TOP_MODULE)
+    } else {
+        build_wb(p).verilog(TOP_MODULE)
+    };
     vec![
         (VERILOG_FILE, format!("{}\n{body}", verilog_header(p))),
         (HEADER_FILE, regmap::c_header(p)),
@@ -165,6 +191,19 @@ the field widths follow the generation parameters: read `PARAM0`/`PARAM1` at run
   the second edge after the write edge.
 - `reset` is synchronous and resets the core and every register of the file together; a
   request in a reset cycle is dropped (never acknowledged).
+
+## Several encoder channels: `--channels N`
+
+`encspeed generate --channels N` (N = 2..=8) makes `{VERILOG_FILE}` N channels (each a core
+and its register file, `hdl::EncspeedWbChannels`) behind one slave: `enc_a`, `enc_b`,
+`enc_z` and `irq` become N bits wide (bit c for channel c), `wb_adr_i` gains the bits that
+number the channels, and channel c's registers are at byte address c · 0x100 + the offsets
+below (`ENCSPEED_CHANNEL_BASE(c)` in `{HEADER_FILE}`). Only the addressed channel sees
+`wb_stb_i`; `wb_dat_o` and `wb_ack_o` are the OR of the channels' registers, so the bus
+timing above is unchanged. The windows above the last channel (N not a power of two) are
+acknowledged like an unmapped offset: they read 0 and ignore writes. `sample` and `reset`
+are shared, so one strobe snapshots every axis at the same edge. The board tops and
+`encspeed_ecc_wb` have one channel.
 
 ## Speeds: LO/HI coherence
 

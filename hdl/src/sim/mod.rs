@@ -5,4 +5,5 @@ pub mod board_sim;
 pub mod core_sim;
 pub mod ecc_sim;
 pub mod ecc_wb_sim;
+pub mod wb_channels_sim;
 pub mod wb_sim;

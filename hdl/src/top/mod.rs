@@ -6,4 +6,5 @@ pub mod ecc_top;
 pub mod ecc_wb_top;
 pub mod fault_flags;
 pub mod mode_reset;
+pub mod wb_channels;
 pub mod wb_top;
