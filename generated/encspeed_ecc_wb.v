@@ -121,6 +121,8 @@ module encspeed_ecc_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb
     wire  [31:0] regs$wb_dat_o;
     wire  regs$wb_ack_o;
     wire  regs$irq;
+    wire  regs$snap_take;
+    wire  regs$snap_sampled;
     wire  [23:0] regs$cfg_dt;
     wire  [23:0] regs$cfg_timeout;
     wire  [15:0] regs$cfg_filter;
@@ -167,6 +169,8 @@ module encspeed_ecc_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb
     wire  [31:0] window$ecc_d;
     wire  window$ident_arm;
     reg  [40:0] window$speed_mtc;
+    reg  window$snap_take;
+    reg  window$snap_sampled;
     reg  window$mtc_strobe;
     reg  [40:0] window$speed_n3c;
     reg  window$n3c_strobe;
@@ -259,6 +263,8 @@ module encspeed_ecc_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb
         .wb_dat_o(regs$wb_dat_o),
         .wb_ack_o(regs$wb_ack_o),
         .irq(regs$irq),
+        .snap_take(regs$snap_take),
+        .snap_sampled(regs$snap_sampled),
         .cfg_dt(regs$cfg_dt),
         .cfg_timeout(regs$cfg_timeout),
         .cfg_filter(regs$cfg_filter),
@@ -307,6 +313,8 @@ module encspeed_ecc_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb
         .ecc_d(window$ecc_d),
         .ident_arm(window$ident_arm),
         .speed_mtc(window$speed_mtc),
+        .snap_take(window$snap_take),
+        .snap_sampled(window$snap_sampled),
         .mtc_strobe(window$mtc_strobe),
         .speed_n3c(window$speed_n3c),
         .n3c_strobe(window$n3c_strobe),
@@ -331,6 +339,8 @@ module encspeed_ecc_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb
         regs$reset = reset;
         regs$sample = sample;
         window$reset = reset;
+        window$snap_take = regs$snap_take;
+        window$snap_sampled = regs$snap_sampled;
         ecc$enc_a = enc_a;
         ecc$enc_b = enc_b;
         ecc$enc_z = enc_z;
@@ -24083,7 +24093,7 @@ module encspeed_ecc_wb$ecc$n3_corrector$state(d,q,clock);
 endmodule // encspeed_ecc_wb$ecc$n3_corrector$state
 
 
-module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,sample,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);
+module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,snap_take,snap_sampled,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,sample,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);
     
     // Module arguments
     input wire  clock;
@@ -24097,6 +24107,8 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
     output reg  irq;
+    output reg  snap_take;
+    output reg  snap_sampled;
     output reg  [23:0] cfg_dt;
     output reg  [23:0] cfg_timeout;
     output reg  [15:0] cfg_filter;
@@ -24685,6 +24697,8 @@ module encspeed_ecc_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_da
         take = (sample & (~hold)) | trigger$pulse;
         snapshot$take = take;
         snapshot$sampled = sampled;
+        snap_take = take;
+        snap_sampled = sampled;
         snapshot$position = position;
         snapshot$nep = nep;
         snapshot$ndt = ndt;
@@ -29609,7 +29623,7 @@ module encspeed_ecc_wb$regs$version(adr,rdata);
 endmodule // encspeed_ecc_wb$regs$version
 
 
-module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,ecc_c,ecc_d,ident_arm,speed_mtc,mtc_strobe,speed_n3c,n3c_strobe,ident_done,ident_overflow,ident_count,ident_t_min,ident_t_max,ident_p_min,ident_p_max,ident_sum_t,ident_sum_sin,ident_sum_cos);
+module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,ecc_c,ecc_d,ident_arm,speed_mtc,snap_take,snap_sampled,mtc_strobe,speed_n3c,n3c_strobe,ident_done,ident_overflow,ident_count,ident_t_min,ident_t_max,ident_p_min,ident_p_max,ident_sum_t,ident_sum_sin,ident_sum_cos);
     
     // Module arguments
     input wire  clock;
@@ -29627,6 +29641,8 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
     output reg  [31:0] ecc_d;
     output reg  ident_arm;
     input wire  [40:0] speed_mtc;
+    input wire  snap_take;
+    input wire  snap_sampled;
     input wire  mtc_strobe;
     input wire  [40:0] speed_n3c;
     input wire  n3c_strobe;
@@ -29707,6 +29723,14 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
     reg  [31:0] stage_d$ones;
     wire  [31:0] stage_d$rdata;
     wire  [31:0] stage_d$q;
+    reg  snapshot$clock;
+    reg  snapshot$reset;
+    reg  snapshot$take;
+    reg  snapshot$sampled;
+    reg  [40:0] snapshot$speed_mtc;
+    reg  [40:0] snapshot$speed_n3c;
+    wire  [40:0] snapshot$seen_mtc;
+    wire  [40:0] snapshot$seen_n3c;
     reg  mtc$clock;
     reg  mtc$reset;
     reg  [7:0] mtc$adr;
@@ -29845,6 +29869,16 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
         .rdata(stage_d$rdata),
         .q(stage_d$q)
     );
+    encspeed_ecc_wb$window$snapshot snapshot(
+        .clock(snapshot$clock),
+        .reset(snapshot$reset),
+        .take(snapshot$take),
+        .sampled(snapshot$sampled),
+        .speed_mtc(snapshot$speed_mtc),
+        .speed_n3c(snapshot$speed_n3c),
+        .seen_mtc(snapshot$seen_mtc),
+        .seen_n3c(snapshot$seen_n3c)
+    );
     encspeed_ecc_wb$window$mtc mtc(
         .clock(mtc$clock),
         .reset(mtc$reset),
@@ -29959,6 +29993,7 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
         arm$clock = clock;
         stage_c$clock = clock;
         stage_d$clock = clock;
+        snapshot$clock = clock;
         mtc$clock = clock;
         n3c$clock = clock;
         file$reset = reset;
@@ -30003,14 +30038,19 @@ module encspeed_ecc_wb$window(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_
         end
         status$adr = file$adr;
         status$value = status_word;
+        snapshot$reset = reset;
+        snapshot$take = snap_take;
+        snapshot$sampled = snap_sampled;
+        snapshot$speed_mtc = speed_mtc;
+        snapshot$speed_n3c = speed_n3c;
         mtc$reset = reset;
         mtc$adr = file$adr;
         mtc$rd = file$rd;
-        mtc$value = speed_mtc;
+        mtc$value = snapshot$seen_mtc;
         n3c$reset = reset;
         n3c$adr = file$adr;
         n3c$rd = file$rd;
-        n3c$value = speed_n3c;
+        n3c$value = snapshot$seen_n3c;
         count$adr = file$adr;
         count$value = ident_count;
         t_min$adr = file$adr;
@@ -32728,6 +32768,106 @@ module encspeed_ecc_wb$window$s2(adr,value,rdata);
     end
     
 endmodule // encspeed_ecc_wb$window$s2
+
+
+module encspeed_ecc_wb$window$snapshot(clock,reset,take,sampled,speed_mtc,speed_n3c,seen_mtc,seen_n3c);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  reset;
+    input wire  take;
+    input wire  sampled;
+    input wire  [40:0] speed_mtc;
+    input wire  [40:0] speed_n3c;
+    output reg  [40:0] seen_mtc;
+    output reg  [40:0] seen_n3c;
+    
+    // Constant declarations
+    localparam  zero_s = 41'h0;
+    
+    // Stub signals
+    reg  [40:0] mtc_q$d;
+    wire  [40:0] mtc_q$q;
+    reg  mtc_q$clock;
+    reg  [40:0] n3c_q$d;
+    wire  [40:0] n3c_q$q;
+    reg  n3c_q$clock;
+    
+    // Sub module instances
+    encspeed_ecc_wb$window$snapshot$mtc_q mtc_q(
+        .d(mtc_q$d),
+        .q(mtc_q$q),
+        .clock(mtc_q$clock)
+    );
+    encspeed_ecc_wb$window$snapshot$n3c_q n3c_q(
+        .d(n3c_q$d),
+        .q(n3c_q$q),
+        .clock(n3c_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        mtc_q$clock = clock;
+        n3c_q$clock = clock;
+        mtc_q$d = mtc_q$q;
+        n3c_q$d = n3c_q$q;
+        if (take) begin
+            mtc_q$d = speed_mtc;
+            n3c_q$d = speed_n3c;
+        end
+        if (reset) begin
+            mtc_q$d = zero_s;
+            n3c_q$d = zero_s;
+        end
+        if (sampled) begin
+            seen_mtc = mtc_q$q;
+            seen_n3c = n3c_q$q;
+        end
+        else begin
+            seen_mtc = speed_mtc;
+            seen_n3c = speed_n3c;
+        end
+    end
+    
+endmodule // encspeed_ecc_wb$window$snapshot
+
+
+module encspeed_ecc_wb$window$snapshot$mtc_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$snapshot$mtc_q
+
+
+module encspeed_ecc_wb$window$snapshot$n3c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [40:0] d;
+    output reg  [40:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 41'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // encspeed_ecc_wb$window$snapshot$n3c_q
 
 
 module encspeed_ecc_wb$window$stage_c(clock,reset,adr,wr,lanes,ones,rdata,q);

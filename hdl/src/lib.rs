@@ -49,6 +49,7 @@ pub use board::uart_wb_bridge::{uart_wb_bridge_verilog, UartWbBridge};
 pub use board::uart_wishbone::{uart_wishbone_verilog, UartWishbone};
 pub use bus::const_cell::ConstCell;
 pub use bus::ecc_regs::EccRegs;
+pub use bus::ecc_snapshot::EccSnapshot;
 pub use bus::irq_cell::IrqCell;
 pub use bus::pulse_cell::PulseCell;
 pub use bus::read_cell::ReadCell;

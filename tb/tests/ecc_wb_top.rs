@@ -6,7 +6,9 @@
 //!   `ECC_CTRL.IDENT_ARM` (before the first index: the top holds it), poll
 //!   `ECC_STATUS.IDENT_DONE`, read the sums as three words each, identify e and θ0 from
 //!   them, write `ECC_C`/`ECC_D` and `ECC_CTRL.LOAD`, then read `SPEED_MT` and
-//!   `SPEED_MTC` pairs at each `MTC` interrupt;
+//!   `SPEED_MTC` pairs at each `MTC` interrupt; then take a snapshot with `CTRL.TRIGGER`
+//!   under `CTRL.HOLD` and `CTRL.SAMPLED` and read `SPEED_MT`, `SPEED_MTC` and `SPEED_N3C`
+//!   from it (the three speeds of the edge the trigger takes, held while the live ones move);
 //! - with random reads of every offset and harmless writes (unmapped, read-only, interrupt
 //!   registers) between the steps.
 //!
@@ -50,6 +52,8 @@ struct Bench {
     outs: Vec<WbTopOutputs>,
     regs: Vec<WbRegsOutputs>,
     window: Vec<EccRegsOutputs>,
+    /// (`speed_mt`, `speed_mtc`, `speed_n3c`) of `encspeed_ecc` after each edge.
+    speeds: Vec<(i64, i64, i64)>,
 }
 
 impl Bench {
@@ -65,6 +69,7 @@ impl Bench {
             outs: Vec::new(),
             regs: Vec::new(),
             window: Vec::new(),
+            speeds: Vec::new(),
         }
     }
 
@@ -93,6 +98,9 @@ impl Bench {
         self.outs.push(o);
         self.regs.push(self.model.regs_outputs());
         self.window.push(self.model.window_outputs());
+        let e = self.model.ecc_outputs();
+        self.speeds
+            .push((e.core.speed_mt, e.speed_mtc, e.speed_n3c));
         o
     }
 
@@ -273,11 +281,53 @@ fn firmware(b: &mut Bench, p: &Params, mode: u32, dt: u32, rev_cycles: u64) -> R
             b.idle(1);
         }
     }
+    snapshot_of_the_corrected_speeds(b, rev_cycles);
     Run {
         ident: (seen, g),
         speeds,
         dt,
     }
+}
+
+/// `CTRL.HOLD` and `CTRL.SAMPLED`, then `CTRL.TRIGGER`: the snapshot holds `speed_mt`,
+/// `speed_mtc` and `speed_n3c` of one edge (the edge after the trigger's write edge stores
+/// them as they stood after the write edge), and the pairs read them, unchanged, while the
+/// live speeds move on for a quarter of a revolution; `SAMPLED` = 0 reads live again.
+fn snapshot_of_the_corrected_speeds(b: &mut Bench, rev_cycles: u64) {
+    use regmap::{CTRL_HOLD_LSB, CTRL_SAMPLED_LSB, CTRL_TRIGGER_LSB};
+    let (sampled, hold, trigger) = (
+        1 << CTRL_SAMPLED_LSB,
+        1 << CTRL_HOLD_LSB,
+        1 << CTRL_TRIGGER_LSB,
+    );
+    // Byte lane 1 only: MODE and Z_MODE (lane 0) stay as they are.
+    b.access(true, regmap::CTRL, sampled | hold, 0b0010);
+    let write_edge = b.inputs.len();
+    b.access(true, regmap::CTRL, sampled | hold | trigger, 0b0010);
+    let (mt, mtc, n3c) = b.speeds[write_edge];
+    let (lo, hi, _) = regmap::SPEEDS[5];
+    let read_all = |b: &mut Bench| {
+        [
+            b.read_speed(lo, hi),
+            b.read_speed(ECC_SPEEDS[0].0, ECC_SPEEDS[0].1),
+            b.read_speed(ECC_SPEEDS[1].0, ECC_SPEEDS[1].1),
+        ]
+    };
+    assert_eq!(read_all(b), [mt, mtc, n3c], "the snapshot of the trigger");
+    b.idle(rev_cycles / 4);
+    assert_ne!(
+        b.speeds.last().map(|s| s.0),
+        Some(mt),
+        "the live M/T speed moved on (the uncorrected one ripples)"
+    );
+    assert_eq!(read_all(b), [mt, mtc, n3c], "held");
+    b.access(true, regmap::CTRL, 0, 0b0010);
+    let start = b.inputs.len();
+    let read = b.read_speed(lo, hi);
+    assert!(
+        read != mt && b.speeds[start..].iter().any(|s| s.0 == read),
+        "live again: {read} not one of the live speeds of the read"
+    );
 }
 
 /// The known answers of a run: the identification against the disc within budget, the

@@ -34,6 +34,15 @@
 //! the speed, sign-extended to 64 bits, into the shadow that `SPEED_MTC_HI`
 //! (`SPEED_N3C_HI`) returns.
 //!
+//! # Snapshot
+//!
+//! The core register file's snapshot ([`crate::bus::regmap`], "Snapshot": the `sample`
+//! input, `CTRL.TRIGGER`, `CTRL.HOLD`) stores the two corrected speeds too, at the same
+//! edge and from the same cycle as position and the six speeds of the core, and while
+//! `CTRL.SAMPLED` = 1 the `SPEED_MTC` and `SPEED_N3C` pairs read them instead of the live
+//! speeds (a LO read latches HI from the snapshot). After reset they are 0. The window has
+//! no controls of its own for this: one `sample` strobe takes all eight speeds.
+//!
 //! # Interrupts
 //!
 //! `ECC_IRQ_STATUS` latches `mtc_strobe`, `n3c_strobe` and the rising edge of `ident_done`
@@ -440,8 +449,10 @@ pub fn markdown(p: &Params) -> String {
           ECC_CTRL.IDENT_ARM, wait for ECC_STATUS.IDENT_DONE (or its interrupt), then read \
           the IDENT_* registers, which hold until the next arm; e and theta0 follow from \
           the three sums (docs/eccentricity-hardware.md). Read SPEED_MTC_LO before \
-          SPEED_MTC_HI (and N3C likewise): the LO read latches HI. The window's interrupt \
-          is ORed into irq.\n\n";
+          SPEED_MTC_HI (and N3C likewise): the LO read latches HI. The core's snapshot \
+          (sample, CTRL.TRIGGER) stores both corrected speeds with the core's, and with \
+          CTRL.SAMPLED = 1 their pairs read it. The window's interrupt is ORed into \
+          irq.\n\n";
     markdown_registers(&mut m, &registers(p.speed_bits()));
     m
 }

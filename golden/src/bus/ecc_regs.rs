@@ -19,7 +19,11 @@
 //!   `ecc_c`, `ecc_d` ← `ECC_C`, `ECC_D` (as they stood before the edge) on such a write
 //!   with a 1 in `LOAD`;
 //! - `ECC_IRQ_STATUS` ← (`ECC_IRQ_STATUS` & !(bits written 1)) | events: `mtc_strobe`,
-//!   `n3c_strobe`, `ident_done` rising (previous level registered, 0 after reset).
+//!   `n3c_strobe`, `ident_done` rising (previous level registered, 0 after reset);
+//! - the snapshot: at an edge with `snap_take` (the core register file's snapshot strobe)
+//!   the two corrected speeds are stored as they stand before the edge (0 after reset);
+//!   while `snap_sampled` (its `CTRL.SAMPLED`) the `SPEED_MTC`/`SPEED_N3C` pairs read them
+//!   instead of the live speeds (a LO read latches HI from the snapshot).
 
 use crate::bus::ecc_regmap::{self, ECC_SPEEDS, IDENT_SUMS};
 use crate::bus::reg_file::{sign_extend, Cycle, RegFileModel, WbBus};
@@ -57,6 +61,11 @@ pub struct EccRegsInputs {
     pub bus: WbBus,
     /// `encspeed_ecc`'s outputs.
     pub status: EccStatus,
+    /// Store the corrected speeds at this edge: the core register file's snapshot strobe
+    /// (`sample` & !`CTRL.HOLD`, or the `CTRL.TRIGGER` pulse: [`crate::bus::wb_regs::WbRegsModel::take`]).
+    pub snap_take: bool,
+    /// `CTRL.SAMPLED` of the core's register file: the speed pairs read the snapshot.
+    pub snap_sampled: bool,
 }
 
 /// Outputs after a clock edge, named as the ports.
@@ -97,6 +106,8 @@ pub struct EccRegsModel {
     ecc_c: u32,
     ecc_d: u32,
     prev_done: bool,
+    /// The corrected speeds of the last snapshot (S-bit patterns, 0 after reset).
+    snapshot: [u64; 2],
 }
 
 /// The masks of the fields the window drives or reads each cycle, looked up in the map once.
@@ -142,7 +153,13 @@ impl EccRegsModel {
             ecc_c: 0,
             ecc_d: 0,
             prev_done: false,
+            snapshot: [0; 2],
         }
+    }
+
+    /// The corrected speeds of the last snapshot, in the order of [`ECC_SPEEDS`].
+    pub fn snapshot(&self) -> [u64; 2] {
+        self.snapshot
     }
 
     /// The slave takes no request at the next edge (an access in progress).
@@ -190,7 +207,13 @@ impl EccRegsModel {
         use ecc_regmap as m;
         let st = &inp.status;
         self.check(st);
-        let wide = st.speeds().map(|v| sign_extend(v, self.speed_bits));
+        // What the speed pairs read: the snapshot before this edge, or the live speeds.
+        let seen = if inp.snap_sampled {
+            self.snapshot
+        } else {
+            st.speeds()
+        };
+        let wide = seen.map(|v| sign_extend(v, self.speed_bits));
         let k = self.masks;
         let ev = |b: bool, mask: u32| if b { mask } else { 0 };
         let events = ev(st.mtc_strobe, k.mtc)
@@ -208,7 +231,11 @@ impl EccRegsModel {
         let req = self.file.step(&cycle, &|off| live(off, st, flags));
         if inp.reset {
             (self.ecc_c, self.ecc_d, self.prev_done) = (0, 0, false);
+            self.snapshot = [0; 2];
         } else {
+            if inp.snap_take {
+                self.snapshot = st.speeds();
+            }
             if req.writes_one(m::ECC_CTRL, k.load) {
                 (self.ecc_c, self.ecc_d) = staged;
             }
@@ -258,14 +285,14 @@ mod tests {
             reset: false,
             bus,
             status: *st,
+            ..Default::default()
         };
         assert!(!r.step(&inputs).wb_ack_o, "executed, not yet acknowledged");
         let o = r.step(&inputs);
         assert!(o.wb_ack_o);
         let idle = r.step(&EccRegsInputs {
-            reset: false,
-            bus: WbBus::default(),
             status: *st,
+            ..Default::default()
         });
         assert!(!idle.wb_ack_o && idle.wb_dat_o == 0);
         o.wb_dat_o
@@ -303,9 +330,9 @@ mod tests {
             wb_sel_i: 1,
         };
         let inputs = EccRegsInputs {
-            reset: false,
             bus,
             status: st,
+            ..Default::default()
         };
         let o = r.step(&inputs);
         assert!(o.ident_arm && !o.wb_ack_o);
@@ -337,5 +364,61 @@ mod tests {
         assert!(r.outputs().irq);
         access(&mut r, &st, true, m::ECC_IRQ_STATUS, 0b100);
         assert!(!r.outputs().irq);
+    }
+
+    /// The snapshot by hand: a `snap_take` edge stores the corrected speeds as they stand,
+    /// `snap_sampled` reads them (LO latches HI from the snapshot) while the live speeds
+    /// move on, and reset clears them.
+    #[test]
+    fn the_snapshot_stores_the_corrected_speeds_of_one_edge() {
+        let mut r = EccRegsModel::new(41);
+        let mut st = EccStatus {
+            speed_mtc: 1000,
+            speed_n3c: (1u64 << 41) - 3,
+            ..Default::default()
+        };
+        r.step(&EccRegsInputs {
+            status: st,
+            snap_take: true,
+            ..Default::default()
+        });
+        assert_eq!(r.snapshot(), [1000, (1u64 << 41) - 3]);
+        st.speed_mtc = 2000;
+        st.speed_n3c = 7;
+        let sampled = |r: &mut EccRegsModel, st: &EccStatus, adr: u32| {
+            let bus = WbBus {
+                wb_cyc_i: true,
+                wb_stb_i: true,
+                wb_adr_i: adr,
+                wb_sel_i: 0xF,
+                ..Default::default()
+            };
+            let inp = EccRegsInputs {
+                bus,
+                status: *st,
+                snap_sampled: true,
+                ..Default::default()
+            };
+            r.step(&inp);
+            let o = r.step(&inp);
+            assert!(o.wb_ack_o);
+            r.step(&EccRegsInputs {
+                status: *st,
+                snap_sampled: true,
+                ..Default::default()
+            });
+            o.wb_dat_o
+        };
+        assert_eq!(sampled(&mut r, &st, m::SPEED_MTC_LO), 1000);
+        assert_eq!(sampled(&mut r, &st, m::SPEED_N3C_LO), 0xFFFF_FFFD);
+        assert_eq!(sampled(&mut r, &st, m::SPEED_N3C_HI), 0xFFFF_FFFF);
+        // Live again without SAMPLED.
+        assert_eq!(access(&mut r, &st, false, m::SPEED_MTC_LO, 0), 2000);
+        r.step(&EccRegsInputs {
+            reset: true,
+            status: st,
+            ..Default::default()
+        });
+        assert_eq!(r.snapshot(), [0, 0]);
     }
 }

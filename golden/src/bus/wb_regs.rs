@@ -225,6 +225,14 @@ impl WbRegsModel {
         self.file.rw(regmap::CTRL) >> CTRL_SAMPLED_LSB & 1 != 0
     }
 
+    /// Whether the next edge takes a snapshot with `sample` applied: `sample` &
+    /// !`CTRL.HOLD`, or the `CTRL.TRIGGER` pulse (the `snap_take` output of the hardware,
+    /// which `encspeed_ecc_wb`'s eccentricity window follows).
+    pub fn take(&self, sample: bool) -> bool {
+        let hold = self.file.rw(regmap::CTRL) >> CTRL_HOLD_LSB & 1 != 0;
+        (sample && !hold) || self.file.pulse(TRIGGER)
+    }
+
     /// The file takes no request at the next edge (an access in progress).
     pub fn busy(&self) -> bool {
         self.file.busy()
@@ -269,8 +277,7 @@ impl WbRegsModel {
     pub fn step(&mut self, inp: &WbRegsInputs) -> WbRegsOutputs {
         let st = &inp.status;
         self.check(st);
-        let hold = self.file.rw(regmap::CTRL) >> CTRL_HOLD_LSB & 1 != 0;
-        let take = (inp.sample && !hold) || self.file.pulse(TRIGGER);
+        let take = self.take(inp.sample);
         // What the value registers read: the snapshot before this edge, or the live values.
         let seen = if self.sampled() {
             self.snapshot.view(st)

@@ -83,6 +83,8 @@ impl EccWbTopModel {
         let w = self.window.outputs();
         let status = core_status(&self.last.core, self.speed_bits);
         let ecc_status = ecc_status(&self.last, self.speed_bits);
+        // The window follows the core register file's snapshot strobe and CTRL.SAMPLED.
+        let (snap_take, snap_sampled) = (self.regs.take(inp.sample), self.regs.sampled());
         self.last = self.ecc.step(EccTopInputs {
             core: core_inputs(inp, &cfg),
             ecc_c: w.coef_c(),
@@ -99,6 +101,8 @@ impl EccWbTopModel {
             reset: inp.reset,
             bus: routed(&inp.bus, true),
             status: ecc_status,
+            snap_take,
+            snap_sampled,
         });
         self.outputs()
     }

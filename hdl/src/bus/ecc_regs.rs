@@ -23,6 +23,7 @@
 //! | `ecc_c`, `ecc_d` | out | 32 | the coefficients last loaded by `ECC_CTRL.LOAD` |
 //! | `ident_arm` | out | 1 | the cycle after a write of 1 to `ECC_CTRL.IDENT_ARM` |
 //! | `speed_mtc`, `speed_n3c` | in | S | corrected speeds (two's complement) |
+//! | `snap_take`, `snap_sampled` | in | 1 | the core register file's snapshot strobe and `CTRL.SAMPLED` ([`EccSnapshot`]) |
 //! | `mtc_strobe`, `n3c_strobe`, `ident_done`, `ident_overflow` | in | 1 | `encspeed_ecc` outputs |
 //! | `ident_count` | in | 17 | |
 //! | `ident_t_min`, `ident_t_max` | in | 32 | |
@@ -43,6 +44,7 @@
 //! coefficients to `ecc_c`, `ecc_d` at the edge of the write.
 
 use crate::bus::const_cell::ConstCell;
+use crate::bus::ecc_snapshot::EccSnapshot;
 use crate::bus::pulse_cell::PulseCell;
 use crate::bus::read_cell::ReadCell;
 use crate::bus::reg_file::RegFile;
@@ -85,6 +87,10 @@ pub struct EccRegs<const S: usize> {
     pub ident_arm: Signal<Out, Bit>,
     /// Corrected M/T speed.
     pub speed_mtc: Signal<In, Bits<S>>,
+    /// The core register file's snapshot strobe: store both corrected speeds at this edge.
+    pub snap_take: Signal<In, Bit>,
+    /// The core register file's `CTRL.SAMPLED`: the speed pairs read the snapshot.
+    pub snap_sampled: Signal<In, Bit>,
     /// One cycle: `speed_mtc` written.
     pub mtc_strobe: Signal<In, Bit>,
     /// Corrected n3.
@@ -119,6 +125,8 @@ pub struct EccRegs<const S: usize> {
     status: ReadCell<32>,
     stage_c: RwCell<32>,
     stage_d: RwCell<32>,
+    /// The corrected speeds of the last snapshot, and what the pairs read.
+    snapshot: EccSnapshot<S>,
     mtc: ShadowCell<S>,
     n3c: ShadowCell<S>,
     count: ReadCell<17>,
@@ -175,6 +183,8 @@ impl<const S: usize> EccRegs<S> {
             ecc_d: Default::default(),
             ident_arm: Default::default(),
             speed_mtc: Default::default(),
+            snap_take: Default::default(),
+            snap_sampled: Default::default(),
             mtc_strobe: Default::default(),
             speed_n3c: Default::default(),
             n3c_strobe: Default::default(),
@@ -195,6 +205,7 @@ impl<const S: usize> EccRegs<S> {
             status: ReadCell::new(reg(ECC_STATUS)),
             stage_c: RwCell::new(reg(m::ECC_C)),
             stage_d: RwCell::new(reg(m::ECC_D)),
+            snapshot: Default::default(),
             mtc: ShadowCell::new(reg(m::SPEED_MTC_LO), reg(m::SPEED_MTC_HI)),
             n3c: ShadowCell::new(reg(m::SPEED_N3C_LO), reg(m::SPEED_N3C_HI)),
             count: ReadCell::new(reg(m::IDENT_COUNT)),
@@ -238,7 +249,7 @@ impl<const S: usize> Logic for EccRegs<S> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, r_ecc_c, r_ecc_d, prev_done);
-        clock!(self, clock, file, arm, stage_c, stage_d, mtc, n3c);
+        clock!(self, clock, file, arm, stage_c, stage_d, snapshot, mtc, n3c);
         // The bus.
         self.file.reset.next = self.reset.val();
         self.file.wb_cyc_i.next = self.wb_cyc_i.val();
@@ -293,15 +304,21 @@ impl<const S: usize> Logic for EccRegs<S> {
         self.status.adr.next = self.file.adr.val();
         self.status.value.next = self.status_word.val();
 
-        // The corrected speeds: LO/HI pairs.
+        // The corrected speeds: the snapshot's choice (live, or stored at the core file's
+        // snapshot edge while CTRL.SAMPLED), read as LO/HI pairs.
+        self.snapshot.reset.next = self.reset.val();
+        self.snapshot.take.next = self.snap_take.val();
+        self.snapshot.sampled.next = self.snap_sampled.val();
+        self.snapshot.speed_mtc.next = self.speed_mtc.val();
+        self.snapshot.speed_n3c.next = self.speed_n3c.val();
         self.mtc.reset.next = self.reset.val();
         self.mtc.adr.next = self.file.adr.val();
         self.mtc.rd.next = self.file.rd.val();
-        self.mtc.value.next = self.speed_mtc.val();
+        self.mtc.value.next = self.snapshot.seen_mtc.val();
         self.n3c.reset.next = self.reset.val();
         self.n3c.adr.next = self.file.adr.val();
         self.n3c.rd.next = self.file.rd.val();
-        self.n3c.value.next = self.speed_n3c.val();
+        self.n3c.value.next = self.snapshot.seen_n3c.val();
 
         // Identification results, live; each sum as words 0, 1 and its sign-extended top byte.
         self.count.adr.next = self.file.adr.val();

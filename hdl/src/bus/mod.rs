@@ -9,6 +9,7 @@
 
 pub mod const_cell;
 pub mod ecc_regs;
+pub mod ecc_snapshot;
 pub mod irq_cell;
 pub mod pulse_cell;
 pub mod read_cell;

@@ -30,6 +30,8 @@
 //! | `wb_dat_o` | out | 32 | read data, valid with `wb_ack_o` (0 otherwise) |
 //! | `wb_ack_o` | out | 1 | high for one cycle from the edge after the request edge |
 //! | `irq` | out | 1 | level: (`IRQ_STATUS` & `IRQ_ENABLE`) ≠ 0 |
+//! | `snap_take` | out | 1 | a snapshot is taken at this edge: (`sample` & !`CTRL.HOLD`) \| the `TRIGGER` pulse (for the eccentricity window of `encspeed_ecc_wb`) |
+//! | `snap_sampled` | out | 1 | `CTRL.SAMPLED` (for the same window) |
 //! | `cfg_dt`, `cfg_timeout` | out | N | `CFG_DT`, `CFG_TIMEOUT` |
 //! | `cfg_filter` | out | FB | `CFG_FILTER` |
 //! | `cfg_mode`, `cfg_z_mode` | out | 2 | `CTRL.MODE`, `CTRL.Z_MODE` |
@@ -41,7 +43,8 @@
 //! | `index`, `direction`, `update`, `speed_strobe`, `baseline_strobe`, `valid`, `stalled`, `fault_illegal`, `fault_overspeed`, `fault_revolution`, `cfg_error` | in | 1 | core outputs |
 //! | `glitch_count`, `illegal_count`, `rev_error_count` | in | G | core outputs |
 //!
-//! Every output is a register or a function of registers only (`irq`: an AND-OR of two).
+//! Every output is a register or a function of registers only (`irq`: an AND-OR of two),
+//! except `snap_take`, which follows the `sample` input through one gate.
 //!
 //! # Timing
 //!
@@ -120,6 +123,11 @@ pub struct WbRegs<const N: usize, const S: usize, const C: usize, const FB: usiz
     pub wb_ack_o: Signal<Out, Bit>,
     /// Interrupt request, level.
     pub irq: Signal<Out, Bit>,
+    /// The snapshot is taken at this edge (`sample` & !`CTRL.HOLD`, or the `CTRL.TRIGGER`
+    /// pulse), for `encspeed_ecc_wb`'s eccentricity window to store its speeds with it.
+    pub snap_take: Signal<Out, Bit>,
+    /// `CTRL.SAMPLED`, for the same window.
+    pub snap_sampled: Signal<Out, Bit>,
     /// dt, clock cycles (0 = generation default).
     pub cfg_dt: Signal<Out, Bits<N>>,
     /// Zero-speed timeout, dt intervals (0 = generation default).
@@ -297,6 +305,8 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             wb_dat_o: Default::default(),
             wb_ack_o: Default::default(),
             irq: Default::default(),
+            snap_take: Default::default(),
+            snap_sampled: Default::default(),
             cfg_dt: Default::default(),
             cfg_timeout: Default::default(),
             cfg_filter: Default::default(),
@@ -488,6 +498,10 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         self.take.next = (self.sample.val() & (!self.hold.val())) | self.trigger.pulse.val();
         self.snapshot.take.next = self.take.val();
         self.snapshot.sampled.next = self.sampled.val();
+        // The same two for the eccentricity window of encspeed_ecc_wb (after they are
+        // assigned: a local read before its assignment is a latch to rust-hdl).
+        self.snap_take.next = self.take.val();
+        self.snap_sampled.next = self.sampled.val();
         self.snapshot.position.next = self.position.val();
         self.snapshot.nep.next = self.nep.val();
         self.snapshot.ndt.next = self.ndt.val();

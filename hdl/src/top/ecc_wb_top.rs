@@ -121,6 +121,10 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         self.regs.reset.next = self.reset.val();
         self.regs.sample.next = self.sample.val();
         self.window.reset.next = self.reset.val();
+        // One snapshot strobe for both slaves: the window stores the corrected speeds at
+        // the edge where the register file stores position and the six speeds.
+        self.window.snap_take.next = self.regs.snap_take.val();
+        self.window.snap_sampled.next = self.regs.snap_sampled.val();
 
         // Encoder in.
         self.ecc.enc_a.next = self.enc_a.val();

@@ -6,13 +6,14 @@
 //! random byte lanes: staged coefficients, loads and arms with other bits set, W1C and
 //! enables, LO-then-HI pairs), cycles of arbitrary bus signals, resets, and random status
 //! inputs (strobes, `ident_done` rising and falling, speeds and 72-bit sums with their
-//! corner values). Seeded, so the coverage figures asserted at the end are the same on
+//! corner values), and the snapshot's `snap_take` strobes with `snap_sampled` toggling
+//! (speed pairs read from the snapshot). Seeded, so the coverage figures asserted at the end are the same on
 //! every run.
 
 use crate::common;
 
 use common::SplitMix;
-use golden::bus::ecc_regmap::{self as m, LAYOUT};
+use golden::bus::ecc_regmap::{self as m, ECC_SPEEDS, LAYOUT};
 use golden::bus::ecc_regs::{EccRegsInputs, EccRegsModel, EccRegsOutputs, EccStatus};
 use golden::bus::reg_file::WbBus;
 use hdl::EccRegs;
@@ -31,6 +32,8 @@ fn step<const S: usize>(uut: &mut EccRegs<S>, inp: &EccRegsInputs) -> EccRegsOut
         bits
     };
     uut.reset.next = inp.reset;
+    uut.snap_take.next = inp.snap_take;
+    uut.snap_sampled.next = inp.snap_sampled;
     uut.wb_cyc_i.next = b.wb_cyc_i;
     uut.wb_stb_i.next = b.wb_stb_i;
     uut.wb_we_i.next = b.wb_we_i;
@@ -72,6 +75,9 @@ struct Coverage {
     irq_cycles: usize,
     negative_top_words: usize,
     resets: usize,
+    /// Snapshots taken, and speed LO reads while the pairs read the snapshot.
+    snapshots: usize,
+    sampled_speed_reads: usize,
 }
 
 /// A value of `bits` bits: random, or one of its corner cases.
@@ -114,7 +120,13 @@ fn run<const S: usize>(seed: u64, cycles: usize) -> Coverage {
     let mut status = EccStatus::default();
     let mut bus = WbBus::default();
     let mut held = false;
+    let mut snap_sampled = false;
     for k in 0..cycles {
+        // The core register file's snapshot strobe and CTRL.SAMPLED.
+        let snap_take = r.next().is_multiple_of(40);
+        if r.next().is_multiple_of(200) {
+            snap_sampled = !snap_sampled;
+        }
         // Status: strobes, a done level, and values that change now and then.
         status.mtc_strobe = r.next().is_multiple_of(20);
         status.n3c_strobe = r.next().is_multiple_of(20);
@@ -181,7 +193,13 @@ fn run<const S: usize>(seed: u64, cycles: usize) -> Coverage {
             }
         }
         let reset = k < 2 || r.next().is_multiple_of(3000);
-        let inp = EccRegsInputs { reset, bus, status };
+        let inp = EccRegsInputs {
+            reset,
+            bus,
+            status,
+            snap_take,
+            snap_sampled,
+        };
         let req = bus.wb_cyc_i && bus.wb_stb_i && !busy && !reset;
         let want = model.step(&inp);
         let got = step(&mut uut, &inp);
@@ -198,6 +216,12 @@ fn run<const S: usize>(seed: u64, cycles: usize) -> Coverage {
         cov.irq_cycles += usize::from(want.irq);
         cov.negative_top_words += usize::from(want.wb_ack_o && want.wb_dat_o >> 8 == 0x00FF_FFFF);
         cov.resets += usize::from(reset);
+        cov.snapshots += usize::from(snap_take && !reset);
+        cov.sampled_speed_reads += usize::from(
+            req && !bus.wb_we_i
+                && snap_sampled
+                && ECC_SPEEDS.iter().any(|&(lo, _, _)| bus.wb_adr_i & !3 == lo),
+        );
     }
     cov
 }
@@ -210,7 +234,9 @@ fn check(cov: &Coverage) {
             && cov.loads > 20
             && cov.irq_cycles > 100
             && cov.negative_top_words > 5
-            && cov.resets > 3,
+            && cov.resets > 3
+            && cov.snapshots > 200
+            && cov.sampled_speed_reads > 20,
         "stimulus coverage {cov:?}"
     );
 }

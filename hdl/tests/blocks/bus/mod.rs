@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT OR Apache-2.0
 mod const_cell;
+mod ecc_snapshot;
 mod irq_cell;
 mod pulse_cell;
 mod read_cell;
