@@ -1552,8 +1552,6 @@ module encspeed_board_ulx3s$ip(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_
     wire  [31:0] regs$wb_dat_o;
     wire  regs$wb_ack_o;
     wire  regs$irq;
-    wire  regs$snap_take;
-    wire  regs$snap_sampled;
     wire  [23:0] regs$cfg_dt;
     wire  [23:0] regs$cfg_timeout;
     wire  [15:0] regs$cfg_filter;
@@ -1585,6 +1583,9 @@ module encspeed_board_ulx3s$ip(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_
     reg  [15:0] regs$glitch_count;
     reg  [15:0] regs$illegal_count;
     reg  [15:0] regs$rev_error_count;
+    wire  regs$snap_hold;
+    wire  regs$snap_trigger;
+    wire  regs$snap_sampled;
     
     // Sub module instances
     encspeed_board_ulx3s$ip$core core(
@@ -1644,8 +1645,6 @@ module encspeed_board_ulx3s$ip(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_
         .wb_dat_o(regs$wb_dat_o),
         .wb_ack_o(regs$wb_ack_o),
         .irq(regs$irq),
-        .snap_take(regs$snap_take),
-        .snap_sampled(regs$snap_sampled),
         .cfg_dt(regs$cfg_dt),
         .cfg_timeout(regs$cfg_timeout),
         .cfg_filter(regs$cfg_filter),
@@ -1676,7 +1675,10 @@ module encspeed_board_ulx3s$ip(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_
         .cfg_error(regs$cfg_error),
         .glitch_count(regs$glitch_count),
         .illegal_count(regs$illegal_count),
-        .rev_error_count(regs$rev_error_count)
+        .rev_error_count(regs$rev_error_count),
+        .snap_hold(regs$snap_hold),
+        .snap_trigger(regs$snap_trigger),
+        .snap_sampled(regs$snap_sampled)
     );
     
     // Update code
@@ -11981,7 +11983,7 @@ module encspeed_board_ulx3s$ip$core$z_mode_reg(d,q,clock);
 endmodule // encspeed_board_ulx3s$ip$core$z_mode_reg
 
 
-module encspeed_board_ulx3s$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,snap_take,snap_sampled,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,sample,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);
+module encspeed_board_ulx3s$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,sample,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count,snap_hold,snap_trigger,snap_sampled);
     
     // Module arguments
     input wire  clock;
@@ -11995,8 +11997,6 @@ module encspeed_board_ulx3s$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
     output reg  irq;
-    output reg  snap_take;
-    output reg  snap_sampled;
     output reg  [23:0] cfg_dt;
     output reg  [23:0] cfg_timeout;
     output reg  [15:0] cfg_filter;
@@ -12028,6 +12028,9 @@ module encspeed_board_ulx3s$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr
     input wire  [15:0] glitch_count;
     input wire  [15:0] illegal_count;
     input wire  [15:0] rev_error_count;
+    output reg  snap_hold;
+    output reg  snap_trigger;
+    output reg  snap_sampled;
     
     // Constant declarations
     localparam  s_valid = 32'h1;
@@ -12585,7 +12588,8 @@ module encspeed_board_ulx3s$ip$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr
         take = (sample & (~hold)) | trigger$pulse;
         snapshot$take = take;
         snapshot$sampled = sampled;
-        snap_take = take;
+        snap_hold = hold;
+        snap_trigger = trigger$pulse;
         snap_sampled = sampled;
         snapshot$position = position;
         snapshot$nep = nep;

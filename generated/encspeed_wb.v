@@ -101,8 +101,6 @@ module encspeed_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb_we_
     wire  [31:0] regs$wb_dat_o;
     wire  regs$wb_ack_o;
     wire  regs$irq;
-    wire  regs$snap_take;
-    wire  regs$snap_sampled;
     wire  [23:0] regs$cfg_dt;
     wire  [23:0] regs$cfg_timeout;
     wire  [15:0] regs$cfg_filter;
@@ -134,6 +132,9 @@ module encspeed_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb_we_
     reg  [15:0] regs$glitch_count;
     reg  [15:0] regs$illegal_count;
     reg  [15:0] regs$rev_error_count;
+    wire  regs$snap_hold;
+    wire  regs$snap_trigger;
+    wire  regs$snap_sampled;
     
     // Sub module instances
     encspeed_wb$core core(
@@ -193,8 +194,6 @@ module encspeed_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb_we_
         .wb_dat_o(regs$wb_dat_o),
         .wb_ack_o(regs$wb_ack_o),
         .irq(regs$irq),
-        .snap_take(regs$snap_take),
-        .snap_sampled(regs$snap_sampled),
         .cfg_dt(regs$cfg_dt),
         .cfg_timeout(regs$cfg_timeout),
         .cfg_filter(regs$cfg_filter),
@@ -225,7 +224,10 @@ module encspeed_wb(clock,reset,enc_a,enc_b,enc_z,sample,wb_cyc_i,wb_stb_i,wb_we_
         .cfg_error(regs$cfg_error),
         .glitch_count(regs$glitch_count),
         .illegal_count(regs$illegal_count),
-        .rev_error_count(regs$rev_error_count)
+        .rev_error_count(regs$rev_error_count),
+        .snap_hold(regs$snap_hold),
+        .snap_trigger(regs$snap_trigger),
+        .snap_sampled(regs$snap_sampled)
     );
     
     // Update code
@@ -10530,7 +10532,7 @@ module encspeed_wb$core$z_mode_reg(d,q,clock);
 endmodule // encspeed_wb$core$z_mode_reg
 
 
-module encspeed_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,snap_take,snap_sampled,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,sample,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count);
+module encspeed_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,wb_sel_i,wb_dat_o,wb_ack_o,irq,cfg_dt,cfg_timeout,cfg_filter,cfg_mode,cfg_z_mode,clear_faults,sample,position,z_latch,index,direction,nep,ndt,update,speed_n1,speed_n2,speed_n3,speed_strobe,speed_pc,speed_et,speed_mt,baseline_strobe,valid,stalled,fault_illegal,fault_overspeed,fault_revolution,cfg_error,glitch_count,illegal_count,rev_error_count,snap_hold,snap_trigger,snap_sampled);
     
     // Module arguments
     input wire  clock;
@@ -10544,8 +10546,6 @@ module encspeed_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     output reg  [31:0] wb_dat_o;
     output reg  wb_ack_o;
     output reg  irq;
-    output reg  snap_take;
-    output reg  snap_sampled;
     output reg  [23:0] cfg_dt;
     output reg  [23:0] cfg_timeout;
     output reg  [15:0] cfg_filter;
@@ -10577,6 +10577,9 @@ module encspeed_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
     input wire  [15:0] glitch_count;
     input wire  [15:0] illegal_count;
     input wire  [15:0] rev_error_count;
+    output reg  snap_hold;
+    output reg  snap_trigger;
+    output reg  snap_sampled;
     
     // Constant declarations
     localparam  s_valid = 32'h1;
@@ -11134,7 +11137,8 @@ module encspeed_wb$regs(clock,reset,wb_cyc_i,wb_stb_i,wb_we_i,wb_adr_i,wb_dat_i,
         take = (sample & (~hold)) | trigger$pulse;
         snapshot$take = take;
         snapshot$sampled = sampled;
-        snap_take = take;
+        snap_hold = hold;
+        snap_trigger = trigger$pulse;
         snap_sampled = sampled;
         snapshot$position = position;
         snapshot$nep = nep;

@@ -226,8 +226,8 @@ impl WbRegsModel {
     }
 
     /// Whether the next edge takes a snapshot with `sample` applied: `sample` &
-    /// !`CTRL.HOLD`, or the `CTRL.TRIGGER` pulse (the `snap_take` output of the hardware,
-    /// which `encspeed_ecc_wb`'s eccentricity window follows).
+    /// !`CTRL.HOLD`, or the `CTRL.TRIGGER` pulse (`encspeed_ecc_wb` applies the same rule
+    /// to the hardware's `snap_hold`/`snap_trigger` outputs for its eccentricity window).
     pub fn take(&self, sample: bool) -> bool {
         let hold = self.file.rw(regmap::CTRL) >> CTRL_HOLD_LSB & 1 != 0;
         (sample && !hold) || self.file.pulse(TRIGGER)

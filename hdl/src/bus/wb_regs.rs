@@ -30,8 +30,6 @@
 //! | `wb_dat_o` | out | 32 | read data, valid with `wb_ack_o` (0 otherwise) |
 //! | `wb_ack_o` | out | 1 | high for one cycle from the edge after the request edge |
 //! | `irq` | out | 1 | level: (`IRQ_STATUS` & `IRQ_ENABLE`) ≠ 0 |
-//! | `snap_take` | out | 1 | a snapshot is taken at this edge: (`sample` & !`CTRL.HOLD`) \| the `TRIGGER` pulse (for the eccentricity window of `encspeed_ecc_wb`) |
-//! | `snap_sampled` | out | 1 | `CTRL.SAMPLED` (for the same window) |
 //! | `cfg_dt`, `cfg_timeout` | out | N | `CFG_DT`, `CFG_TIMEOUT` |
 //! | `cfg_filter` | out | FB | `CFG_FILTER` |
 //! | `cfg_mode`, `cfg_z_mode` | out | 2 | `CTRL.MODE`, `CTRL.Z_MODE` |
@@ -42,9 +40,9 @@
 //! | `speed_n1..n3`, `speed_pc`, `speed_et`, `speed_mt` | in | S | core outputs (two's complement) |
 //! | `index`, `direction`, `update`, `speed_strobe`, `baseline_strobe`, `valid`, `stalled`, `fault_illegal`, `fault_overspeed`, `fault_revolution`, `cfg_error` | in | 1 | core outputs |
 //! | `glitch_count`, `illegal_count`, `rev_error_count` | in | G | core outputs |
+//! | `snap_hold`, `snap_trigger`, `snap_sampled` | out | 1 | `CTRL.HOLD`, the `CTRL.TRIGGER` pulse, `CTRL.SAMPLED`: the snapshot's controls, for the eccentricity window of `encspeed_ecc_wb` (a snapshot is taken at an edge with (`sample` & !`snap_hold`) \| `snap_trigger`) |
 //!
-//! Every output is a register or a function of registers only (`irq`: an AND-OR of two),
-//! except `snap_take`, which follows the `sample` input through one gate.
+//! Every output is a register or a function of registers only (`irq`: an AND-OR of two).
 //!
 //! # Timing
 //!
@@ -123,11 +121,6 @@ pub struct WbRegs<const N: usize, const S: usize, const C: usize, const FB: usiz
     pub wb_ack_o: Signal<Out, Bit>,
     /// Interrupt request, level.
     pub irq: Signal<Out, Bit>,
-    /// The snapshot is taken at this edge (`sample` & !`CTRL.HOLD`, or the `CTRL.TRIGGER`
-    /// pulse), for `encspeed_ecc_wb`'s eccentricity window to store its speeds with it.
-    pub snap_take: Signal<Out, Bit>,
-    /// `CTRL.SAMPLED`, for the same window.
-    pub snap_sampled: Signal<Out, Bit>,
     /// dt, clock cycles (0 = generation default).
     pub cfg_dt: Signal<Out, Bits<N>>,
     /// Zero-speed timeout, dt intervals (0 = generation default).
@@ -190,6 +183,17 @@ pub struct WbRegs<const N: usize, const S: usize, const C: usize, const FB: usiz
     pub illegal_count: Signal<In, Bits<G>>,
     /// Revolution errors (saturating).
     pub rev_error_count: Signal<In, Bits<G>>,
+    // The snapshot's controls, for the eccentricity window of `encspeed_ecc_wb`, which
+    // stores its corrected speeds with the same strobe. Last among the ports, and
+    // registers only, so that they change `encspeed_wb`'s netlist as little as possible: a
+    // yosys netlist moves with any added port, and nextpnr's placement with it
+    // (docs/resources.md, "Placement noise").
+    /// `CTRL.HOLD`.
+    pub snap_hold: Signal<Out, Bit>,
+    /// The `CTRL.TRIGGER` pulse (high in the cycle after the write of 1).
+    pub snap_trigger: Signal<Out, Bit>,
+    /// `CTRL.SAMPLED`.
+    pub snap_sampled: Signal<Out, Bit>,
     // Front end, read data and the cells, in map order.
     file: RegFile,
     id: ConstCell,
@@ -305,8 +309,6 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             wb_dat_o: Default::default(),
             wb_ack_o: Default::default(),
             irq: Default::default(),
-            snap_take: Default::default(),
-            snap_sampled: Default::default(),
             cfg_dt: Default::default(),
             cfg_timeout: Default::default(),
             cfg_filter: Default::default(),
@@ -338,6 +340,9 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
             glitch_count: Default::default(),
             illegal_count: Default::default(),
             rev_error_count: Default::default(),
+            snap_hold: Default::default(),
+            snap_trigger: Default::default(),
+            snap_sampled: Default::default(),
             file: RegFile::new(r("IRQ_ENABLE"), r("IRQ_STATUS")),
             id: ConstCell::new(r("ID")),
             version: ConstCell::new(r("VERSION")),
@@ -498,9 +503,11 @@ impl<const N: usize, const S: usize, const C: usize, const FB: usize, const G: u
         self.take.next = (self.sample.val() & (!self.hold.val())) | self.trigger.pulse.val();
         self.snapshot.take.next = self.take.val();
         self.snapshot.sampled.next = self.sampled.val();
-        // The same two for the eccentricity window of encspeed_ecc_wb (after they are
-        // assigned: a local read before its assignment is a latch to rust-hdl).
-        self.snap_take.next = self.take.val();
+        // The snapshot's controls for the eccentricity window of encspeed_ecc_wb, which
+        // applies the rule of `take` above to them (after they are assigned: a local read
+        // before its assignment is a latch to rust-hdl).
+        self.snap_hold.next = self.hold.val();
+        self.snap_trigger.next = self.trigger.pulse.val();
         self.snap_sampled.next = self.sampled.val();
         self.snapshot.position.next = self.position.val();
         self.snapshot.nep.next = self.nep.val();

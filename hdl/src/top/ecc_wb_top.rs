@@ -13,6 +13,13 @@
 //! wb_ack_o, wb_dat_o, irq: the OR of both slaves' (the one not addressed outputs 0)
 //! ```
 //!
+//! One snapshot for both slaves: `WbRegs` stores position and the six speeds at an edge
+//! with (`sample` & !`CTRL.HOLD`) | the `CTRL.TRIGGER` pulse, and this top applies the same
+//! rule to `WbRegs`' `snap_hold`/`snap_trigger` outputs to drive `EccRegs`' `snap_take`, so
+//! that the window stores the two corrected speeds at the same edge (and reads them while
+//! `snap_sampled`, `CTRL.SAMPLED`). The rule is applied here rather than output by `WbRegs`
+//! so that its outputs stay registers (docs/resources.md, "Placement noise").
+//!
 //! # Ports
 //! Those of `encspeed_wb` (`golden::top::wb_top::wb_top_ports`): `clock`, `reset`, `enc_a`,
 //! `enc_b`, `enc_z`, `sample`, `wb_cyc_i`, `wb_stb_i`, `wb_we_i`, `wb_adr_i[7:0]`, `wb_dat_i[31:0]`,
@@ -123,7 +130,10 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         self.window.reset.next = self.reset.val();
         // One snapshot strobe for both slaves: the window stores the corrected speeds at
         // the edge where the register file stores position and the six speeds.
-        self.window.snap_take.next = self.regs.snap_take.val();
+        // The register file's rule, on its controls: `sample` unless CTRL.HOLD, or the
+        // CTRL.TRIGGER pulse.
+        self.window.snap_take.next =
+            (self.sample.val() & !self.regs.snap_hold.val()) | self.regs.snap_trigger.val();
         self.window.snap_sampled.next = self.regs.snap_sampled.val();
 
         // Encoder in.
