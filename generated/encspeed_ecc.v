@@ -58,7 +58,7 @@
 //   output mtc_strobe: one cycle: speed_mtc has just been written
 //   output speed_n3c[40:0]: Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3
 //   output n3c_strobe: one cycle: speed_n3c has just been written
-//   input  ident_arm: one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and takes effect there, so the revolution gathered is the one from the second index to the third; ident_done clears when the arm takes effect
+//   input  ident_arm: one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and takes effect there, so the revolution gathered is the one from the second index to the third; ident_done clears when the arm takes effect. In a build without the identification (generate --no-identification) it does nothing and every ident_* output reads 0
 //   output ident_done: the ident_* results are complete: rises 2 edges after the edge that raised the closing index; sticky until the next arm takes effect
 //   output ident_overflow: more than 2^16 lines between the index pulses (contract broken, extra lines dropped)
 //   output ident_count[16:0]: forward lines gathered N (lines per revolution for a clean revolution)
@@ -145,6 +145,11 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
     localparam  lines_x1 = 32'h400;
     localparam  lines_x2 = 32'h800;
     localparam  lines_x4 = 32'h1000;
+    localparam  has_ident = 1'b1;
+    localparam  count_zero = 17'b0;
+    localparam  period_zero = 32'h0;
+    localparam  line_zero = 16'h0;
+    localparam  sum_zero = 72'h0;
     
     // Stub signals
     reg  core$clock;
@@ -508,6 +513,19 @@ module encspeed_ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_filter,
         ident_sum_t = gatherer$sum_t;
         ident_sum_sin = gatherer$sum_sin;
         ident_sum_cos = gatherer$sum_cos;
+        if (~has_ident) begin
+            gatherer$arm = 1'b0;
+            ident_done = 1'b0;
+            ident_overflow = 1'b0;
+            ident_count = count_zero;
+            ident_t_min = period_zero;
+            ident_p_min = line_zero;
+            ident_t_max = period_zero;
+            ident_p_max = line_zero;
+            ident_sum_t = sum_zero;
+            ident_sum_sin = sum_zero;
+            ident_sum_cos = sum_zero;
+        end
     end
     
 endmodule // encspeed_ecc

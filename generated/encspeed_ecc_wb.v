@@ -487,6 +487,11 @@ module encspeed_ecc_wb$ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_
     localparam  lines_x1 = 32'h400;
     localparam  lines_x2 = 32'h800;
     localparam  lines_x4 = 32'h1000;
+    localparam  has_ident = 1'b1;
+    localparam  count_zero = 17'b0;
+    localparam  period_zero = 32'h0;
+    localparam  line_zero = 16'h0;
+    localparam  sum_zero = 72'h0;
     
     // Stub signals
     reg  core$clock;
@@ -850,6 +855,19 @@ module encspeed_ecc_wb$ecc(clock,reset,enc_a,enc_b,enc_z,cfg_dt,cfg_timeout,cfg_
         ident_sum_t = gatherer$sum_t;
         ident_sum_sin = gatherer$sum_sin;
         ident_sum_cos = gatherer$sum_cos;
+        if (~has_ident) begin
+            gatherer$arm = 1'b0;
+            ident_done = 1'b0;
+            ident_overflow = 1'b0;
+            ident_count = count_zero;
+            ident_t_min = period_zero;
+            ident_p_min = line_zero;
+            ident_t_max = period_zero;
+            ident_p_max = line_zero;
+            ident_sum_t = sum_zero;
+            ident_sum_sin = sum_zero;
+            ident_sum_cos = sum_zero;
+        end
     end
     
 endmodule // encspeed_ecc_wb$ecc

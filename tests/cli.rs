@@ -357,6 +357,8 @@ const INVALID: &[(&str, &str, &str, &str)] = &[
     ("timeout_s", "--timeout-s", "-1", "-1"),
     ("estimators", "--estimators", "pc,mt", r#"["pc", "mt"]"#),
     ("channels", "--channels", "9", "9"),
+    // A flag: its invalid use is a value (`--no-identification=yes`, one argument).
+    ("identification", "--no-identification", "=yes", "3"),
 ];
 
 fn spec_keys() -> Vec<String> {
@@ -415,7 +417,12 @@ fn every_spec_field_has_an_option_with_unit_range_and_default() {
 fn invalid_option_of_every_field_exits_2_naming_it_and_writes_nothing() {
     for (key, opt, value, _) in INVALID {
         let out = empty_dir(&format!("bad-option-{key}"));
-        let o = encspeed(&["generate", "--out", out.to_str().unwrap(), opt, value]);
+        let flag_with_value = format!("{opt}{value}");
+        let o = if value.starts_with('=') {
+            encspeed(&["generate", "--out", out.to_str().unwrap(), &flag_with_value])
+        } else {
+            encspeed(&["generate", "--out", out.to_str().unwrap(), opt, value])
+        };
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{opt} {value}: {err}");
         assert!(

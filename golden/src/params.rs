@@ -57,6 +57,13 @@ pub struct Spec {
     /// register window of [`crate::bus::regmap::SPAN_BYTES`] bytes, channel c at byte
     /// offset c · 0x100 (`crate::top::wb_channels`). The other tops have one channel.
     pub channels: u32,
+    /// Whether the eccentricity tops (`encspeed_ecc`, `encspeed_ecc_wb`) build the online
+    /// identification (the line tap and the gatherer of one revolution's sums, the
+    /// `ident_*` ports and `IDENT_*` registers). Left out (`false`, `--no-identification`)
+    /// those ports and registers read 0, `ident_arm` and `CTRL.ARM` do nothing, and the
+    /// correction runs on coefficients identified elsewhere (`encspeed identify`). The
+    /// core and `encspeed_wb` have no identification and ignore it.
+    pub identification: bool,
 }
 
 /// A speed output of the core that a build may leave out (`estimators`): Rairán's n1, n2
@@ -142,6 +149,7 @@ impl Default for Spec {
             timeout_s: 1.0,
             estimators: SpeedOutput::ALL.to_vec(),
             channels: 1,
+            identification: true,
         }
     }
 }
@@ -444,7 +452,16 @@ impl Params {
         if s.channels > 1 {
             line.push_str(&format!(", channels = {}", s.channels));
         }
+        if !s.identification {
+            line.push_str(", identification = false");
+        }
         line
+    }
+
+    /// Whether the eccentricity tops build the online identification (`identification`;
+    /// left out, its ports and registers read 0).
+    pub fn identification(&self) -> bool {
+        self.spec.identification
     }
 
     /// Encoder channels of `encspeed_wb` (`channels`, 1..=[`MAX_CHANNELS`]).

@@ -39,6 +39,9 @@ pub fn generate_command(p: &Params) -> String {
     if s.channels > 1 {
         command.push_str(&format!(" --channels {}", s.channels));
     }
+    if !s.identification {
+        command.push_str(" --no-identification");
+    }
     command
 }
 

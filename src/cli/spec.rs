@@ -77,6 +77,14 @@ fn describe(key: &str) -> Option<(&'static str, &'static str, String)> {
                  encspeed_ecc_wb have one"
             ),
         ),
+        "identification" => (
+            "no-identification",
+            "",
+            "Leave the online eccentricity identification out of encspeed_ecc and \
+             encspeed_ecc_wb (a flag; in a file, identification = false): ident_* and \
+             IDENT_* read 0, the correction runs on coefficients identified elsewhere"
+                .to_string(),
+        ),
         _ => return None,
     })
 }
@@ -148,6 +156,16 @@ impl Args for SpecArgs {
             let Some((long, value_name, about)) = describe(&key) else {
                 continue;
             };
+            // A boolean field is on by default and has a flag that turns it off.
+            if default.is_bool() {
+                cmd = cmd.arg(
+                    Arg::new(long)
+                        .long(long)
+                        .action(ArgAction::SetTrue)
+                        .help(format!("{about} [default {key} = {}]", show(default))),
+                );
+                continue;
+            }
             let float = default.is_float();
             let list = default.is_array();
             let field = key.clone();
@@ -200,7 +218,11 @@ impl clap::FromArgMatches for SpecArgs {
         self.print_config |= m.get_flag("print-config");
         for key in spec_keys() {
             if let Some((long, _, _)) = describe(&key) {
-                if let Some(v) = m.get_one::<toml::Value>(long) {
+                if default_table()[&key].is_bool() {
+                    if m.get_flag(long) {
+                        self.options.insert(key, toml::Value::Boolean(false));
+                    }
+                } else if let Some(v) = m.get_one::<toml::Value>(long) {
                     self.options.insert(key, v.clone());
                 }
             }
@@ -311,7 +333,11 @@ mod tests {
     fn every_spec_field_has_an_option() {
         for key in spec_keys() {
             let (long, _, about) = describe(&key).unwrap_or_else(|| panic!("describe {key}"));
-            assert_eq!(long.replace('-', "_"), key);
+            // A boolean field's option is the flag that turns it off.
+            assert_eq!(
+                long.strip_prefix("no-").unwrap_or(long).replace('-', "_"),
+                key
+            );
             assert!(!about.is_empty());
         }
     }
@@ -351,6 +377,25 @@ mod tests {
             e.contains("n3 is missing") && e.contains("--estimators"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn no_identification_is_a_flag_that_turns_the_field_off() {
+        use clap::FromArgMatches;
+        let cmd = SpecArgs::augment_args(clap::Command::new("t"));
+        let params = |argv: &[&str]| {
+            let m = cmd.clone().try_get_matches_from(argv).unwrap();
+            SpecArgs::from_arg_matches(&m).unwrap().params().unwrap()
+        };
+        assert!(params(&["t"]).identification());
+        let off = params(&["t", "--no-identification"]);
+        assert!(!off.identification());
+        assert!(config_toml(off.spec()).contains("\nidentification = false\n"));
+        assert!(golden::provenance::generate_command(&off).ends_with(" --no-identification"));
+        // It takes no value.
+        assert!(cmd
+            .try_get_matches_from(["t", "--no-identification", "false"])
+            .is_err());
     }
 
     #[test]

@@ -8,6 +8,9 @@
 //!   every strobe of the Verilog equal to the model's, and each corrected estimate within
 //!   its quantisation budget ([`tb::ecc_ripple`]);
 //! - the same for n3 (`speed_n3`, `speed_n3c`) against Rairán's bound for the hardware;
+//! - built without the identification (`--no-identification`): the model's `ident_*` read
+//!   0 where the full top's gather a revolution, every other output equal to the full
+//!   top's, and rust-hdl and the Verilog equal to that model;
 //! - the identification the Verilog gathers (armed at the first index) against the disc's
 //!   e and θ0 within `golden::ecc::ident_gatherer::error_budget`, equal to the model's, and the
 //!   whole loop: identify, load the corrector, correct.
@@ -113,6 +116,74 @@ proptest! {
         if !reverse && armed_for > revs_needed * rev_cycles + 100.0 {
             prop_assert_eq!(check_revolution(&wanted[wanted.len() - 1].ident, lines, rev_cycles), Ok(()));
         }
+    }
+}
+
+/// `encspeed_ecc` built without the identification (`Spec::identification` false): on an
+/// eccentric disc armed after the first index, the full top's model gathers a revolution
+/// (`ident_done` and the sums non-zero), while the reduced top's model reads 0 on every
+/// `ident_*` output and equals the full one on every other output, cycle for cycle; rust-hdl
+/// (the first 24 000 cycles: it is slow) and the emitted Verilog in Verilator (all of them)
+/// equal the reduced model.
+#[test]
+fn identification_left_out_reads_zero_in_every_layer() {
+    let full = small(16);
+    let off = Params::new(Spec {
+        identification: false,
+        ..full.spec().clone()
+    })
+    .unwrap();
+    assert!(full.identification() && !off.identification());
+    let disc = EccentricDisc::new(16, Eccentricity::new(Model::Rigid, 0.1, 1.0).unwrap()).unwrap();
+    // 12 lines per ms: a revolution of 16 lines is 1 333 cycles at 1 MHz.
+    let rps = 12_000.0 / 16.0;
+    let cycles = 30_000u64;
+    let profile = Profile::constant(rps, cycles as f64 / 1e6).unwrap();
+    let (initial, changes) = disc.clock_changes(&profile, 1e6);
+    let (c, d) = coefficients(16, 0.1, 1.0);
+    let config = EccTopInputs {
+        core: CoreInputs {
+            cfg_dt: 400,
+            cfg_z_mode: 1,
+            ..Default::default()
+        },
+        ecc_c: c,
+        ecc_d: d,
+        ident_arm: false,
+    };
+    let mut full_model = ArmedModel::new(&full, Some(700));
+    let mut off_model = ArmedModel::new(&off, Some(700));
+    let (mut done_cycles, mut strobes) = (0, 0);
+    let (inputs, wanted): (Vec<_>, Vec<_>) = disc_inputs(initial, &changes, cycles, config)
+        .enumerate()
+        .map(|(k, i)| {
+            let (i, with) = full_model.step(i);
+            let (i_off, without) = off_model.step(i);
+            assert_eq!(i_off, i, "cycle {k}: the same arm");
+            done_cycles += usize::from(with.ident.done);
+            strobes += usize::from(with.mtc_strobe) + usize::from(with.n3c_strobe);
+            let mut expected = with;
+            expected.ident = Default::default();
+            assert_eq!(
+                without, expected,
+                "cycle {k}: the full top's with ident_* = 0"
+            );
+            (i, without)
+        })
+        .unzip();
+    assert!(
+        done_cycles > 0 && strobes > 0,
+        "the full top gathered no revolution ({done_cycles} cycles done) or corrected \
+         nothing ({strobes} strobes)"
+    );
+    let got = verilated(&off).run(&inputs, None).unwrap();
+    assert_eq!(got.len(), wanted.len());
+    for (k, (g, w)) in got.iter().zip(&wanted).enumerate() {
+        assert_eq!(g, w, "Verilog, cycle {k}");
+    }
+    let mut sim = build_ecc(&off).unwrap();
+    for (k, (i, w)) in inputs.iter().zip(&wanted).take(24_000).enumerate() {
+        assert_eq!(&sim.step(i), w, "rust-hdl, cycle {k}");
     }
 }
 

@@ -23,6 +23,11 @@
 //! [`crate::ecc::ident_gatherer::identify_from_sums`] turns the sums into e and θ0 in the frame
 //! of the core's position, the frame of `ecc_c`/`ecc_d`. `reset` and a change of
 //! `cfg_mode` reset both.
+//!
+//! **Without the identification** ([`Params::identification`] false, `generate
+//! --no-identification`): every `ident_*` output reads 0 at every cycle and `ident_arm` does
+//! nothing; every other output is that of the full top, cycle for cycle (the hardware ties
+//! the ports to 0 and synthesis removes the tap and the gatherer).
 
 use crate::baselines::baseline_speeds::BaselineFormat;
 use crate::ecc::ident_gatherer::{GatherInputs, GatherOutputs, IdentGatherer};
@@ -140,6 +145,8 @@ pub struct EccTopModel {
     aligned: bool,
     arm_pending: bool,
     mode_reset: ModeReset,
+    /// `identification`: without it the gatherer's results read 0 (module docs).
+    identification: bool,
 }
 
 impl EccTopModel {
@@ -159,6 +166,7 @@ impl EccTopModel {
             aligned: false,
             arm_pending: false,
             mode_reset: ModeReset::new(),
+            identification: p.identification(),
         }
     }
 
@@ -225,7 +233,13 @@ impl EccTopModel {
             mtc_strobe: mtc.valid,
             speed_n3c: n3c.n3c,
             n3c_strobe: n3c.valid,
-            ident,
+            // Built without the identification: its ports read 0 (the gatherer runs on
+            // here only so that the model stays one model).
+            ident: if self.identification {
+                ident
+            } else {
+                GatherOutputs::default()
+            },
         }
     }
 }

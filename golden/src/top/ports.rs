@@ -162,7 +162,7 @@ pub fn ecc_ports(counter_bits: u32) -> Vec<Port> {
         o("mtc_strobe", 1, "one cycle: speed_mtc has just been written"),
         o("speed_n3c", s, "Rairan n3 corrected for the eccentricity; format as speed_n3; needs cfg_z_mode = 1 or 3"),
         o("n3c_strobe", 1, "one cycle: speed_n3c has just been written"),
-        i("ident_arm", 1, "one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and takes effect there, so the revolution gathered is the one from the second index to the third; ident_done clears when the arm takes effect"),
+        i("ident_arm", 1, "one-cycle pulse: gather the next revolution (index to index) for the eccentricity identification (cfg_z_mode = 1 or 3, forward at constant speed); an arm before the first index since reset or a cfg_mode change is held until that index, which aligns the position, and takes effect there, so the revolution gathered is the one from the second index to the third; ident_done clears when the arm takes effect. In a build without the identification (generate --no-identification) it does nothing and every ident_* output reads 0"),
         o("ident_done", 1, "the ident_* results are complete: rises 2 edges after the edge that raised the closing index; sticky until the next arm takes effect"),
         o("ident_overflow", 1, "more than 2^16 lines between the index pulses (contract broken, extra lines dropped)"),
         o("ident_count", 17, "forward lines gathered N (lines per revolution for a clean revolution)"),

@@ -20,6 +20,8 @@
 //! of `speed_n3`) and `n3c_strobe`; `ident_arm` and the gatherer's results `ident_*`
 //! (docs/ports.md). An `ident_arm` before the first index since reset (or a change of
 //! `cfg_mode`) is held until that index (`aligned`, `arm_pending`), as the model says.
+//! Built without the identification (`--no-identification`), the `ident_*` ports read 0
+//! and `ident_arm` does nothing (`has_ident`).
 
 use crate::ecc::ident_gatherer::IdentGatherer;
 use crate::ecc::line_tap::LineTap;
@@ -186,6 +188,14 @@ pub struct EncspeedEcc<const N: usize, const P: usize, const S: usize, const CW:
     lines_x1: Constant<Bits<C>>,
     lines_x2: Constant<Bits<C>>,
     lines_x4: Constant<Bits<C>>,
+    /// `identification` (golden `Params::identification`): without it every `ident_*`
+    /// port is tied to 0 and the gatherer's arm to 0, so that nothing reads the line tap
+    /// and the gatherer and synthesis removes them (their tables and multipliers with them).
+    has_ident: Constant<Bit>,
+    count_zero: Constant<Bits<17>>,
+    period_zero: Constant<Bits<TB>>,
+    line_zero: Constant<Bits<LB>>,
+    sum_zero: Constant<Bits<WB>>,
 }
 
 impl<const N: usize, const P: usize, const S: usize, const CW: usize> EncspeedEcc<N, P, S, CW> {
@@ -277,6 +287,12 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> EncspeedEc
             lines_x1: lines(0),
             lines_x2: lines(1),
             lines_x4: lines(2),
+            has_ident: Constant::new(p.identification()),
+            count_zero: Constant::new(Bits::default()),
+            period_zero: Constant::new(Bits::default()),
+            line_zero: Constant::new(Bits::default()),
+            // W = 72 > 64 bits: zero from the default, not from a u64.
+            sum_zero: Constant::new(Bits::default()),
         }
     }
 }
@@ -411,5 +427,19 @@ impl<const N: usize, const P: usize, const S: usize, const CW: usize> Logic
         self.ident_sum_t.next = self.gatherer.sum_t.val();
         self.ident_sum_sin.next = self.gatherer.sum_sin.val();
         self.ident_sum_cos.next = self.gatherer.sum_cos.val();
+        // Built without the identification: its ports read 0 (the field's docs).
+        if !self.has_ident.val() {
+            self.gatherer.arm.next = false;
+            self.ident_done.next = false;
+            self.ident_overflow.next = false;
+            self.ident_count.next = self.count_zero.val();
+            self.ident_t_min.next = self.period_zero.val();
+            self.ident_p_min.next = self.line_zero.val();
+            self.ident_t_max.next = self.period_zero.val();
+            self.ident_p_max.next = self.line_zero.val();
+            self.ident_sum_t.next = self.sum_zero.val();
+            self.ident_sum_sin.next = self.sum_zero.val();
+            self.ident_sum_cos.next = self.sum_zero.val();
+        }
     }
 }
