@@ -60,9 +60,9 @@ pub struct Spec {
     /// Whether the eccentricity tops (`encspeed_ecc`, `encspeed_ecc_wb`) build the online
     /// identification (the line tap and the gatherer of one revolution's sums, the
     /// `ident_*` ports and `IDENT_*` registers). Left out (`false`, `--no-identification`)
-    /// those ports and registers read 0, `ident_arm` and `CTRL.ARM` do nothing, and the
-    /// correction runs on coefficients identified elsewhere (`encspeed identify`). The
-    /// core and `encspeed_wb` have no identification and ignore it.
+    /// those ports and registers read 0, `ident_arm` and `ECC_CTRL.IDENT_ARM` do nothing,
+    /// and the correction runs on coefficients identified elsewhere (`encspeed identify`).
+    /// The core and `encspeed_wb` have no identification and ignore it.
     pub identification: bool,
 }
 

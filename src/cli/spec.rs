@@ -216,9 +216,10 @@ impl clap::FromArgMatches for SpecArgs {
             self.config = Some(path.clone());
         }
         self.print_config |= m.get_flag("print-config");
+        let defaults = default_table();
         for key in spec_keys() {
             if let Some((long, _, _)) = describe(&key) {
-                if default_table()[&key].is_bool() {
+                if defaults[&key].is_bool() {
                     if m.get_flag(long) {
                         self.options.insert(key, toml::Value::Boolean(false));
                     }

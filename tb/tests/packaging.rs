@@ -107,7 +107,7 @@ fn yosys_elaborate(dir: &Path, files: &[String], top: &str) -> Result<String, St
             .current_dir(dir)
             .arg("-p")
             .arg(format!(
-                "read_verilog {}; hierarchy -check -top {top}; proc; stat",
+                "read_verilog -noautowire {}; hierarchy -check -top {top}; proc; stat",
                 files.join(" ")
             )),
         "yosys",

@@ -223,7 +223,8 @@ pub fn parse_stat(stat: &str) -> Cells {
 
 /// yosys `synth_ice40 [-dsp] -top <top>` (`dsp`: map multipliers to the UP5K's SB_MAC16)
 /// or `synth_ecp5 -top <top>` (which always maps them to MULT18X18D) of `files` in `dir`
-/// (relative to it), with `check -assert`; the cell counts of the flattened design and
+/// (relative to it), read with `-noautowire` (an undeclared name is an error, not an
+/// undriven wire) and checked with `check -assert`; the cell counts of the flattened design and
 /// `<json>` written for nextpnr.
 pub fn synth_json(
     dir: &Path,
@@ -241,7 +242,7 @@ pub fn synth_json(
         Family::Ecp5 => "synth_ecp5",
     };
     let script = format!(
-        "read_verilog {}; {synth} -top {top} -json {json}; check -assert; tee -q -o {} stat",
+        "read_verilog -noautowire {}; {synth} -top {top} -json {json}; check -assert; tee -q -o {} stat",
         files.join(" "),
         stat.display()
     );

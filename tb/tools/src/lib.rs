@@ -254,14 +254,16 @@ pub fn fusesoc_run(
     )
 }
 
-/// yosys `read_verilog <file>; synth_ice40 -top <top>; check -assert; stat` in `dir`: the
-/// log (stdout), or an error if yosys failed or inferred a latch.
+/// yosys `read_verilog -noautowire <file>; synth_ice40 -top <top>; check -assert; stat` in
+/// `dir`: the log (stdout), or an error if yosys failed or inferred a latch. `-noautowire`
+/// makes an undeclared name an error: yosys otherwise declares it as an undriven wire and
+/// synthesises on (rust-hdl once emitted a Rust constant's name in a bit index).
 pub fn yosys_synth_ice40(dir: &Path, top: &str, file: &str) -> Result<String, String> {
     let out = Command::new("yosys")
         .current_dir(dir)
         .arg("-p")
         .arg(format!(
-            "read_verilog {file}; synth_ice40 -top {top}; check -assert; stat"
+            "read_verilog -noautowire {file}; synth_ice40 -top {top}; check -assert; stat"
         ))
         .output()
         .map_err(|e| format!("cannot run yosys: {e} (install it: see .ci/run)"))?;
