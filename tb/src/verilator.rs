@@ -332,6 +332,71 @@ impl<I: PortFields + Clone, O: PortFields> Simulator<I, O> {
     }
 }
 
+impl<I: PortFields + Clone, O: PortFields> Simulator<I, O> {
+    /// A session with the compiled Verilog in which each cycle's inputs may depend on the
+    /// outputs of the cycles before (a host program on a serial line): the harness runs with
+    /// `--line`, which flushes each line of outputs as it is printed.
+    pub fn session(&self) -> Result<Session<I, O>, String> {
+        let mut child = Command::new(&self.exe)
+            .arg("--line")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn()
+            .map_err(|e| format!("cannot start {}: {e}", self.exe.display()))?;
+        let stdin = child.stdin.take().expect("piped stdin");
+        let stdout = BufReader::new(child.stdout.take().expect("piped stdout"));
+        Ok(Session {
+            inputs: self.inputs.clone(),
+            outputs: self.outputs.clone(),
+            cycle: PhantomData,
+            child,
+            stdin,
+            stdout,
+            line: String::new(),
+        })
+    }
+}
+
+/// A running harness stepped one clock edge at a time ([`Simulator::session`]); the
+/// harness ends when the session is dropped.
+pub struct Session<I, O> {
+    inputs: Vec<Port>,
+    outputs: Vec<Port>,
+    cycle: PhantomData<fn(I) -> O>,
+    child: std::process::Child,
+    stdin: std::process::ChildStdin,
+    stdout: BufReader<std::process::ChildStdout>,
+    line: String,
+}
+
+impl<I: PortFields + Clone, O: PortFields> Session<I, O> {
+    /// One rising clock edge with `inputs` applied; the outputs after it.
+    pub fn step(&mut self, inputs: &I) -> Result<O, String> {
+        let text = line_of(&to_port_bits(inputs, &self.inputs), &self.inputs) + "\n";
+        self.stdin
+            .write_all(text.as_bytes())
+            .and_then(|()| self.stdin.flush())
+            .map_err(|e| format!("writing to the harness: {e}"))?;
+        self.line.clear();
+        match self.stdout.read_line(&mut self.line) {
+            Ok(0) => Err("the harness ended".to_string()),
+            Ok(_) => Ok(from_port_bits(
+                &bits_of(self.line.trim_end(), &self.outputs)?,
+                &self.outputs,
+            )),
+            Err(e) => Err(format!("reading from the harness: {e}")),
+        }
+    }
+}
+
+impl<I, O> Drop for Session<I, O> {
+    fn drop(&mut self) {
+        // Closing stdin ends the harness's loop; kill it in case it is stuck.
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
 /// (name, contents) pairs as [`tools::verilator_build`] takes them.
 fn file_refs(files: &[(String, String)]) -> Vec<(&str, &str)> {
     files

@@ -9,6 +9,9 @@
 // gives one rising clock edge and prints the outputs after the edge, one line per cycle, so
 // the Rust side compares them with the golden model line by line.
 // Optional "--vcd PATH" (stream mode) writes a VCD of every signal of the emitted Verilog.
+// Optional "--line" flushes each line of outputs as soon as it is printed, so a caller can
+// answer each cycle's outputs with the next cycle's inputs (an interactive session: the host
+// program's bench, tb/tests/board/monitor.rs); without it, outputs go out in 64 KiB blocks.
 #include "verilated.h"
 #if VM_TRACE
 #include "verilated_vcd_c.h"
@@ -19,7 +22,7 @@
 #define MODE_USAGE ""
 #endif
 
-static int stream(VerilatedContext& ctx, Top& top, const char* vcd_path) {
+static int stream(VerilatedContext& ctx, Top& top, const char* vcd_path, bool line_mode) {
 #if VM_TRACE
     VerilatedVcdC* tfp = nullptr;
     if (vcd_path) {
@@ -53,6 +56,7 @@ static int stream(VerilatedContext& ctx, Top& top, const char* vcd_path) {
         if (tfp) tfp->dump((uint64_t)(cycle * 10 + 10));
 #endif
         print_outputs(top);
+        if (line_mode) fflush(stdout);
         ++cycle;
     }
 #if VM_TRACE
@@ -70,9 +74,12 @@ int main(int argc, char** argv) {
     static char out_buf[1 << 16];
     setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
     const char* vcd_path = nullptr;
+    bool line_mode = false;
     for (int i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--vcd") && i + 1 < argc) {
             vcd_path = argv[++i];
+        } else if (!strcmp(argv[i], "--line")) {
+            line_mode = true;
 #ifdef MODE_FLAG
         } else if (!strcmp(argv[i], MODE_FLAG) && i + MODE_ARGS < argc) {
             int rc = mode(top, argv + i + 1);
@@ -80,9 +87,9 @@ int main(int argc, char** argv) {
             return rc;
 #endif
         } else {
-            fprintf(stderr, "usage: %s [--vcd PATH]%s\n", argv[0], MODE_USAGE);
+            fprintf(stderr, "usage: %s [--vcd PATH] [--line]%s\n", argv[0], MODE_USAGE);
             return 2;
         }
     }
-    return stream(ctx, top, vcd_path);
+    return stream(ctx, top, vcd_path, line_mode);
 }
