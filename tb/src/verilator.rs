@@ -293,15 +293,12 @@ impl<I: PortFields + Clone, O: PortFields> Simulator<I, O> {
 
     /// One line of inputs (no newline).
     pub fn input_line(&self, inputs: &I) -> String {
-        line_of(&to_port_bits(inputs, &self.inputs), &self.inputs)
+        input_line(inputs, &self.inputs)
     }
 
     /// The outputs of one line of the harness.
     pub fn outputs_of(&self, line: &str) -> Result<O, String> {
-        Ok(from_port_bits(
-            &bits_of(line, &self.outputs)?,
-            &self.outputs,
-        ))
+        outputs_of(line, &self.outputs)
     }
 
     /// Run `inputs` through the compiled Verilog, one clock edge per input; optionally write
@@ -372,7 +369,7 @@ pub struct Session<I, O> {
 impl<I: PortFields + Clone, O: PortFields> Session<I, O> {
     /// One rising clock edge with `inputs` applied; the outputs after it.
     pub fn step(&mut self, inputs: &I) -> Result<O, String> {
-        let text = line_of(&to_port_bits(inputs, &self.inputs), &self.inputs) + "\n";
+        let text = input_line(inputs, &self.inputs) + "\n";
         self.stdin
             .write_all(text.as_bytes())
             .and_then(|()| self.stdin.flush())
@@ -380,10 +377,7 @@ impl<I: PortFields + Clone, O: PortFields> Session<I, O> {
         self.line.clear();
         match self.stdout.read_line(&mut self.line) {
             Ok(0) => Err("the harness ended".to_string()),
-            Ok(_) => Ok(from_port_bits(
-                &bits_of(self.line.trim_end(), &self.outputs)?,
-                &self.outputs,
-            )),
+            Ok(_) => outputs_of(self.line.trim_end(), &self.outputs),
             Err(e) => Err(format!("reading from the harness: {e}")),
         }
     }
@@ -391,10 +385,20 @@ impl<I: PortFields + Clone, O: PortFields> Session<I, O> {
 
 impl<I, O> Drop for Session<I, O> {
     fn drop(&mut self) {
-        // Closing stdin ends the harness's loop; kill it in case it is stuck.
+        // The harness would wait for the next line of inputs: end it.
         let _ = self.child.kill();
         let _ = self.child.wait();
     }
+}
+
+/// One harness line of `inputs` on the input ports `ports` (no newline).
+fn input_line<I: PortFields + Clone>(inputs: &I, ports: &[Port]) -> String {
+    line_of(&to_port_bits(inputs, ports), ports)
+}
+
+/// The outputs in one harness `line` of the output ports `ports`.
+fn outputs_of<O: PortFields>(line: &str, ports: &[Port]) -> Result<O, String> {
+    Ok(from_port_bits(&bits_of(line, ports)?, ports))
 }
 
 /// (name, contents) pairs as [`tools::verilator_build`] takes them.

@@ -4,13 +4,13 @@
 //! to the rust-hdl board cycle for cycle, and the shipped file), through a simulated serial
 //! port: the bytes the host writes become `rx` frames, the `tx` frames become the bytes it
 //! reads. Verilator, stepped one edge at a time (`Simulator::session`), runs the test's
-//! 270 000 cycles in seconds, where rust-hdl took four and a half minutes. The host identifies the
-//! IP from its registers (known answers: 24-bit counters, F = 16, 1024 lines, 12 MHz, dt
-//! 12 000), writes a shorter dt, and reads a sample while an encoder turns at a constant
-//! speed: position, status and the speeds in r/min, each speed within its error budget
-//! (`golden::top::error_budget::output_bound`) of the true speed, which is fixed by the
-//! stimulus (one quadrature step every 23 cycles of 12 MHz, four steps a line: 12e6 /
-//! (23 · 4 · 1024) rev/s = 7 642.66 r/min), decoded x1 (the mode after reset).
+//! 271 605 cycles in seconds, where rust-hdl took four and a half minutes. The host
+//! identifies the IP from its registers (known answers: 24-bit counters, F = 16, 1024
+//! lines, 12 MHz, dt 12 000), writes a shorter dt, and reads a sample while an encoder
+//! turns at a constant speed: position, status and the speeds in r/min, each speed within
+//! its error budget (`golden::top::error_budget::output_bound`) of the true speed, which is
+//! fixed by the stimulus (one quadrature step every 23 cycles of 12 MHz, four steps a
+//! line: 12e6 / (23 · 4 · 1024) rev/s = 7 642.66 r/min), decoded x1 (the mode after reset).
 
 use golden::board::boards::{board_ports, Board, BoardInputs, BoardOutputs};
 use golden::board::host::{identify, sample, Bridge, DeviceInfo};
